@@ -1,0 +1,32 @@
+#pragma once
+// What the command-line tools share: finding scenes, loading one with a
+// summary, and running a job over a folder of scenes.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "meshtrace/scene.h"
+
+namespace meshtrace::app {
+
+// Every .sce file below `dir`, sorted by path.
+std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir);
+
+// Loads a scene, prints its warnings and a one-line summary with the load
+// time. Prints the error and returns nothing on bad input.
+std::optional<Scene> loadAndDescribe(const std::filesystem::path& file);
+
+// Runs `job(scene, outputPath)` for each scene under `dir` that `wanted`
+// accepts, writing to outDir/<prefix><stem>.png. Returns the process exit
+// code: 0 if every scene succeeded.
+int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
+                  const std::string& prefix, const std::function<bool(const Scene&)>& wanted,
+                  const std::function<bool(const Scene&, const std::filesystem::path&)>& job);
+
+// Milliseconds since `start`, for timing lines.
+double millisecondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace meshtrace::app

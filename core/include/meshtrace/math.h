@@ -1,0 +1,31 @@
+#pragma once
+// Vector types and the ray. The core traces in double precision throughout.
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshtrace {
+
+using Vec3 = glm::dvec3;
+using Color = glm::dvec3;
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;  // unit length, so a ray parameter t is a distance
+
+  Vec3 at(double t) const { return origin + t * direction; }
+};
+
+inline double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
+inline double maxAbsComponent(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+inline bool isFinite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,27 @@
+#pragma once
+// Whole-image rendering on all cores. Every pixel is computed independently,
+// so the image is the same whatever the thread count.
+#include "meshtrace/counters.h"
+#include "meshtrace/image.h"
+#include "meshtrace/intersector.h"
+
+namespace meshtrace {
+
+struct RenderOptions {
+  AccelMethod accel = AccelMethod::BoundingBox;
+  int threads = 0;  // 0: all cores
+};
+
+Image render(const Scene& scene, const RenderOptions& options, Counters* counters = nullptr);
+
+// Per pixel, the number of mesh bounding boxes the primary ray meets at t >= 0.
+struct BoxHitCounts {
+  int width = 0, height = 0;
+  std::vector<int> counts;  // row 0 at the top, like Image
+  int maxCount = 0;
+};
+BoxHitCounts countBoxHits(const Scene& scene, int threads = 0);
+// Red = count / max count, as the reference debug images.
+Image debugAabbImage(const BoxHitCounts& counts);
+
+}  // namespace meshtrace
