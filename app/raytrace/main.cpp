@@ -26,7 +26,7 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
   const Image image = render(scene, options.render, &counters);
   const double renderMs = app::millisecondsSince(start);
   std::printf("rendered %dx%d with --accel %s in %.1f ms\n", image.width, image.height,
-              toString(options.render.accel), renderMs);
+              toString(options.render.trace.accel), renderMs);
   if (options.stats) {
     std::printf("%s", counters.describe().c_str());
     std::printf("vertex normals computed: %zu\n", vertexNormalsComputed(scene));
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(cli, argc, argv);
 
   try {
-    options.render.accel = parseAccelMethod(accel);
+    options.render.trace.accel = parseAccelMethod(accel);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

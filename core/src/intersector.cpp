@@ -22,14 +22,14 @@ AccelMethod parseAccelMethod(std::string_view name) {
                               "' (use none or aabb)");
 }
 
-SceneIntersector::SceneIntersector(const Scene& scene, AccelMethod method)
-    : scene_(scene), method_(method) {}
+SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& options)
+    : scene_(scene), options_(options) {}
 
 bool SceneIntersector::intersectMesh(std::uint32_t index, const Ray& ray,
                                      const RayInverse& inverse, double tMin, Hit& hit,
                                      bool anyHit, Counters& counters) const {
   const Mesh& mesh = scene_.meshes[index];
-  if (method_ == AccelMethod::BoundingBox) {
+  if (options_.accel == AccelMethod::BoundingBox) {
     ++counters.boxTests;
     double tEnter, tExit;
     if (!intersectSlabs(mesh.bounds(), inverse, tMin, hit.t, tEnter, tExit)) return false;

@@ -38,7 +38,7 @@ Counters forEachPixel(int width, int height, int threads, const Body& body) {
 }  // namespace
 
 Image render(const Scene& scene, const RenderOptions& options, Counters* counters) {
-  const SceneIntersector intersector(scene, options.accel);
+  const SceneIntersector intersector(scene, options.trace);
   const Integrator integrator(intersector);
   Image image(scene.camera.width(), scene.camera.height());
   const Counters total = forEachPixel(

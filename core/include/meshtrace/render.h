@@ -8,7 +8,7 @@
 namespace meshtrace {
 
 struct RenderOptions {
-  AccelMethod accel = AccelMethod::BoundingBox;
+  TraceOptions trace;
   int threads = 0;  // 0: all cores
 };
 
