@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <new>
 #include <system_error>
 
 #include "meshtrace/input_error.h"
@@ -40,6 +41,12 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file) {
     return scene;
   } catch (const InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
+    return std::nullopt;
+  } catch (const std::bad_alloc&) {
+    // Files within the size limits can still need more memory than the
+    // machine has: say so rather than abort.
+    std::fprintf(stderr, "error: %s: not enough memory to load the scene\n",
+                 file.string().c_str());
     return std::nullopt;
   }
 }

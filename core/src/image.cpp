@@ -35,18 +35,56 @@ std::string lowerExtension(const std::filesystem::path& path) {
   return ext;
 }
 
-bool writePpm(const Image8& image, const char* path) {
-  std::ofstream out(path, std::ios::binary);
-  out << "P6\n" << image.width << ' ' << image.height << "\n255\n";
-  out.write(reinterpret_cast<const char*>(image.rgb.data()),
-            static_cast<std::streamsize>(image.rgb.size()));
-  return static_cast<bool>(out.flush());
+// stb's encoders append to the vector through this callback.
+void appendBytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
 }
 
-bool writeBytes(const std::vector<std::uint8_t>& bytes, const char* path) {
-  std::ofstream out(path, std::ios::binary);
+std::vector<std::uint8_t> encodePpm(const Image8& image) {
+  const std::string header =
+      "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
+  std::vector<std::uint8_t> out(header.begin(), header.end());
+  out.insert(out.end(), image.rgb.begin(), image.rgb.end());
+  return out;
+}
+
+// The file's bytes for the type named by `ext`. Encoding in memory and
+// writing separately lets every write error be seen: stb's file writers
+// ignore failed writes and report success for a truncated file.
+std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
+                                 const std::filesystem::path& path) {
+  std::vector<std::uint8_t> bytes;
+  bool ok = true;
+  if (ext == ".png") {
+    ok = stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                image.rgb.data(), image.width * 3);
+  } else if (ext == ".bmp") {
+    ok = stbi_write_bmp_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                image.rgb.data());
+  } else if (ext == ".ppm") {
+    bytes = encodePpm(image);
+  } else if (ext == ".jpg" || ext == ".jpeg") {
+    try {
+      bytes = jpeg::encode(image, 95);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(path.string() + ": " + e.what());
+    }
+  } else {
+    throw std::runtime_error(path.string() + ": unknown image type '" + ext +
+                             "' (use .png, .bmp, .ppm or .jpg)");
+  }
+  if (!ok) throw std::runtime_error(path.string() + ": cannot encode the image");
+  return bytes;
+}
+
+// True only if every byte reached the file and it closed cleanly.
+bool writeBytes(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  return static_cast<bool>(out.flush());
+  out.close();
+  return !out.fail();
 }
 
 std::vector<std::uint8_t> readBytes(const std::filesystem::path& path) {
@@ -57,34 +95,21 @@ std::vector<std::uint8_t> readBytes(const std::filesystem::path& path) {
 }  // namespace
 
 void writeImage(const Image8& image, const std::filesystem::path& path) {
-  const std::string ext = lowerExtension(path);
+  const std::vector<std::uint8_t> bytes = encode(image, lowerExtension(path), path);
   // The temporary file sits beside the target so the rename stays on one
   // file system and is atomic.
   std::filesystem::path tmp = path;
   tmp += ".tmp" + std::to_string(::getpid());
-  const std::string t = tmp.string();
-  bool ok = false;
-  if (ext == ".png") {
-    ok = stbi_write_png(t.c_str(), image.width, image.height, 3, image.rgb.data(), image.width * 3);
-  } else if (ext == ".bmp") {
-    ok = stbi_write_bmp(t.c_str(), image.width, image.height, 3, image.rgb.data());
-  } else if (ext == ".ppm") {
-    ok = writePpm(image, t.c_str());
-  } else if (ext == ".jpg" || ext == ".jpeg") {
-    ok = writeBytes(jpeg::encode(image, 95), t.c_str());
-  } else {
-    throw std::runtime_error(path.string() + ": unknown image type '" + ext +
-                             "' (use .png, .bmp, .ppm or .jpg)");
-  }
   std::error_code ec;
-  if (!ok) {
+  if (!writeBytes(bytes, tmp)) {
     std::filesystem::remove(tmp, ec);
     throw std::runtime_error(path.string() + ": cannot write the image file");
   }
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
+    const std::string reason = ec.message();
     std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(path.string() + ": cannot write the image file (" + ec.message() + ")");
+    throw std::runtime_error(path.string() + ": cannot write the image file (" + reason + ")");
   }
 }
 

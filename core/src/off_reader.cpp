@@ -25,8 +25,12 @@ class OffParser {
     std::int64_t counts[3] = {0, 0, 0};
     readHeader(counts);
     const std::int64_t nv = counts[0], nf = counts[1];
-    if (static_cast<std::uintmax_t>(nv) * kMinVertexBytes +
-            static_cast<std::uintmax_t>(nf) * kMinFaceBytes > size_) {
+    // Divide rather than multiply: counts near 2^63 would wrap the product
+    // around to a small number and pass.
+    const auto vertexCount = static_cast<std::uintmax_t>(nv);
+    const auto faceCount = static_cast<std::uintmax_t>(nf);
+    if (vertexCount > size_ / kMinVertexBytes || faceCount > size_ / kMinFaceBytes ||
+        vertexCount * kMinVertexBytes + faceCount * kMinFaceBytes > size_) {
       fail("header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces, more than a " + std::to_string(size_) + "-byte file can hold");
     }

@@ -1,0 +1,150 @@
+// The raytrace tool as a user runs it: renders, refuses bad input cleanly
+// and never leaves a broken or half-written output file.
+#include <gtest/gtest.h>
+
+#include "../support/cli.h"
+#include "../support/files.h"
+#include "../support/paths.h"
+#include "../support/scene_snippets.h"
+#include "meshtrace/image.h"
+
+namespace meshtrace {
+namespace {
+
+using test::raytraceTool;
+
+class RaytraceBadInput : public ::testing::TestWithParam<test::BadInput> {};
+
+TEST_P(RaytraceBadInput, ExitsWithAnErrorNamingTheFileAndLeavesTheOutput) {
+  test::expectRefusesBadInput(raytraceTool(), GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, RaytraceBadInput, ::testing::ValuesIn(test::badInputs()),
+                         [](const auto& info) { return info.param.name; });
+
+// A scratch folder holding good.sce (a sphere and a mesh) and its mesh.
+std::filesystem::path folderWithGoodScene() {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "tri.off", test::kTriangleOff);
+  test::writeFile(dir / "good.sce", test::kCameraLine + "light 0 0 10 1 1 1\n" + test::kSphereLine +
+                                        "mesh tri.off PHONG " + test::kMaterial + "\n");
+  return dir;
+}
+
+std::vector<std::string> renderArgs(const std::filesystem::path& dir, const std::string& out) {
+  return {(dir / "good.sce").string(), (dir / out).string()};
+}
+
+TEST(RaytraceCli, RendersEachImageTypeAtTheSceneSize) {
+  const auto dir = folderWithGoodScene();
+  for (const char* name : {"out.png", "out.bmp", "out.ppm", "out.jpg"}) {
+    test::expectSuccess(raytraceTool(), renderArgs(dir, name), dir);
+    const Image8 image = readImage(dir / name);
+    EXPECT_EQ(image.width, 8) << name;
+    EXPECT_EQ(image.height, 6) << name;
+  }
+}
+
+TEST(RaytraceCli, ReportsWhatItLoadedAndHowLongItTook) {
+  const auto dir = folderWithGoodScene();
+  const test::ToolResult r = test::expectSuccess(raytraceTool(), renderArgs(dir, "out.png"), dir);
+  test::expectMentions(r.out, {"2 objects", "1 triangles", "ms", "rendered 8x6", "wrote"});
+}
+
+TEST(RaytraceCli, ReplacesAnExistingOutputWithTheNewImage) {
+  const auto dir = folderWithGoodScene();
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  test::expectSuccess(raytraceTool(), renderArgs(dir, "out.png"), dir);
+  EXPECT_EQ(readImage(dir / "out.png").width, 8);
+  EXPECT_EQ(test::listFolder(dir), (std::vector<std::string>{"good.sce", "out.png", "tri.off"}));
+}
+
+TEST(RaytraceCli, GivesTheSameImageForOneAndTwoThreads) {
+  const auto dir = folderWithGoodScene();
+  auto args1 = renderArgs(dir, "one.ppm");
+  auto args2 = renderArgs(dir, "two.ppm");
+  args1.insert(args1.begin(), {"--threads", "1"});
+  args2.insert(args2.begin(), {"--threads", "2"});
+  test::expectSuccess(raytraceTool(), args1, dir);
+  test::expectSuccess(raytraceTool(), args2, dir);
+  EXPECT_TRUE(test::readFileBytes(dir / "one.ppm") == test::readFileBytes(dir / "two.ppm"));
+}
+
+TEST(RaytraceCli, WarnsButRendersWhenUpIsParallelToTheView) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "up.sce", "# from above\ncamera 0 5 0  0 0 0  0 1 0  45  8 6\n" +
+                                      test::kSphereLine);
+  const test::ToolResult r =
+      test::runTool(raytraceTool(), {(dir / "up.sce").string(), (dir / "out.png").string()}, dir);
+  ASSERT_TRUE(r.exited) << test::describe(r);
+  EXPECT_EQ(r.exitCode, 0) << test::describe(r);
+  test::expectMentions(r.err, {"warning", "up.sce:2", "parallel"});
+  EXPECT_EQ(readImage(dir / "out.png").width, 8);
+}
+
+TEST(RaytraceCli, RefusesAnOutputInAMissingFolder) {
+  const auto dir = folderWithGoodScene();
+  test::expectRefusal(raytraceTool(), renderArgs(dir, "missing/out.png"), dir, {"out.png"},
+                      dir / "missing" / "out.png");
+}
+
+TEST(RaytraceCli, RefusesAnOutputPathThatIsAFolder) {
+  const auto dir = folderWithGoodScene();
+  std::filesystem::create_directory(dir / "out.png");
+  test::expectRefusal(raytraceTool(), renderArgs(dir, "out.png"), dir, {"out.png"}, dir / "out.png");
+  EXPECT_TRUE(std::filesystem::is_directory(dir / "out.png"));
+}
+
+TEST(RaytraceCli, RefusesAnOutputBelowARegularFile) {
+  const auto dir = folderWithGoodScene();
+  test::writeFile(dir / "file", "x");
+  test::expectRefusal(raytraceTool(), renderArgs(dir, "file/out.png"), dir, {"out.png"},
+                      dir / "file");
+}
+
+TEST(RaytraceCli, RefusesAnUnknownImageTypeLeavingTheOldFile) {
+  const auto dir = folderWithGoodScene();
+  test::writeFile(dir / "out.gif", test::kOldOutput);
+  test::expectRefusal(raytraceTool(), renderArgs(dir, "out.gif"), dir, {"out.gif", "image type"},
+                      dir / "out.gif");
+}
+
+TEST(RaytraceCli, RefusesAReadOnlyFolderLeavingTheOldFile) {
+  if (::geteuid() == 0) GTEST_SKIP() << "running as root: permissions do not stop writes";
+  const auto dir = folderWithGoodScene();
+  std::filesystem::create_directory(dir / "ro");
+  test::writeFile(dir / "ro" / "out.png", test::kOldOutput);
+  std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_read |
+                                               std::filesystem::perms::owner_exec);
+  test::expectRefusal(raytraceTool(), renderArgs(dir, "ro/out.png"), dir / "ro", {"out.png"},
+                      dir / "ro" / "out.png");
+  std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
+}
+
+TEST(RaytraceCli, AllRendersTheGoodScenesAndNamesTheBadOnes) {
+  const auto dir = folderWithGoodScene();
+  std::filesystem::create_directories(dir / "scenes" / "sub");
+  std::filesystem::copy_file(dir / "good.sce", dir / "scenes" / "good.sce");
+  std::filesystem::copy_file(dir / "tri.off", dir / "scenes" / "tri.off");
+  test::writeFile(dir / "scenes" / "sub" / "broken.sce", test::kCameraLine + "depth x\n");
+  const test::ToolResult r = test::runTool(
+      raytraceTool(), {"--all", (dir / "scenes").string(), (dir / "results").string()}, dir);
+  ASSERT_TRUE(r.exited) << test::describe(r);
+  EXPECT_EQ(r.exitCode, 1) << "one scene failed";
+  test::expectMentions(r.err, {"broken.sce:2", "depth"});
+  EXPECT_EQ(test::listFolder(dir / "results"), std::vector<std::string>{"good.png"});
+}
+
+TEST(RaytraceCli, RefusesBadCommandLines) {
+  const auto dir = folderWithGoodScene();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{}, {"only-one.sce"}, {"--accel", "octree", "a.sce", "b.png"},
+        {"--threads", "-3", "a.sce", "b.png"}}) {
+    const test::ToolResult r = test::runTool(raytraceTool(), args, dir);
+    ASSERT_TRUE(r.exited) << test::describe(r);
+    EXPECT_NE(r.exitCode, 0) << test::describe(r);
+  }
+}
+
+}  // namespace
+}  // namespace meshtrace
