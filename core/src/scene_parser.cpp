@@ -11,9 +11,10 @@ namespace meshtrace {
 
 namespace {
 constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{256} << 20;
-// Refuse images that would need gigabytes before allocating them.
+// Refuse images that would need gigabytes before allocating them: 2^25
+// pixels holds 8K UHD (7680 x 4320) and needs 0.8 GB of double colour.
 constexpr int kMaxImageSide = 16384;
-constexpr long long kMaxImagePixels = 64LL << 20;
+constexpr long long kMaxImagePixels = 1LL << 25;
 constexpr int kMaxDepth = 1000;
 
 struct Token {
