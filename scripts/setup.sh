@@ -12,6 +12,10 @@ packages=(
   libglm-dev libtbb-dev libstb-dev libjpeg-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libbenchmark-dev
+  # the viewer: window, UI, offscreen GL, the OpenMesh cross-check, and its
+  # headless snapshot and real-window tests
+  libglfw3-dev libimgui-dev libosmesa6-dev libgl1-mesa-dri libopenmesh-dev
+  xvfb xauth xdotool
 )
 
 missing=()

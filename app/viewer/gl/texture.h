@@ -1,0 +1,31 @@
+#pragma once
+// An RGBA8 texture the viewer draws images with, updated in rectangles.
+#include <cstdint>
+
+namespace meshtrace::gl {
+
+class Texture {
+ public:
+  Texture() = default;
+  ~Texture();
+  Texture(const Texture&) = delete;
+  Texture& operator=(const Texture&) = delete;
+
+  // (Re)allocates when the size changes; contents are then undefined.
+  void resize(int width, int height);
+  // Uploads rows [y0, y1) and columns [x0, x1) of a full-size RGBA image
+  // stored top row first (rows are drawn top first too).
+  void upload(const std::uint8_t* rgba, int x0, int y0, int x1, int y1);
+  void uploadAll(const std::uint8_t* rgba) { upload(rgba, 0, 0, width_, height_); }
+
+  unsigned id() const { return id_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool valid() const { return id_ != 0 && width_ > 0; }
+
+ private:
+  unsigned id_ = 0;
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace meshtrace::gl

@@ -1,0 +1,17 @@
+// viewer: the interactive scene viewer and pixel debugger.
+#include <cstdlib>
+
+#include "model/options.h"
+#include "platform/run.h"
+
+int main(int argc, char** argv) {
+  // Mesa's software rasteriser (llvmpipe, all there is without a GPU) then
+  // draws on the UI thread instead of handing each frame to its own threads,
+  // which compete with the render workers for the cores. Ignored by GPUs.
+  setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);
+  int exitCode = 0;
+  const auto options = meshtrace::viewer::parseOptions(argc, argv, exitCode);
+  if (!options) return exitCode;
+  return options->headless ? meshtrace::viewer::runHeadless(*options, argv[0])
+                           : meshtrace::viewer::runWindow(*options, argv[0]);
+}

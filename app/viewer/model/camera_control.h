@@ -1,0 +1,24 @@
+#pragma once
+// Mouse camera control on a scene camera, and the camera's line in .sce syntax.
+#include <string>
+
+#include "meshtrace/camera.h"
+
+namespace meshtrace::viewer {
+
+// Turns the eye around the centre: dx pixels of drag yaw about the up
+// vector, dy pixels pitch about the image's horizontal axis (stopping short
+// of the poles). 0.5 degree per pixel.
+CameraSpec orbit(const CameraSpec& camera, double dxPixels, double dyPixels);
+
+// Moves eye and centre together so that the point under the mouse in the
+// centre's plane follows the mouse (image pixels, y up).
+CameraSpec pan(const CameraSpec& camera, double dxPixels, double dyPixels);
+
+// Moves the eye toward the centre (steps > 0) or away, 10% of the distance a step.
+CameraSpec zoom(const CameraSpec& camera, double steps);
+
+// "camera ex ey ez cx cy cz ux uy uz fovy width height", shortest round-trip numbers.
+std::string cameraLine(const CameraSpec& camera);
+
+}  // namespace meshtrace::viewer

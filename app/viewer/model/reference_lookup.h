@@ -1,0 +1,13 @@
+#pragma once
+// Where a scene's reference image is: an expected_results/ folder beside one
+// of the scene's enclosing folders holding <stem>.png, .jpg, .ppm or .bmp
+// (the seed's layout, scenes/<name>/<name>.sce with expected_results/<name>.jpg,
+// and ours).
+#include <filesystem>
+#include <optional>
+
+namespace meshtrace::viewer {
+
+std::optional<std::filesystem::path> findReference(const std::filesystem::path& scene);
+
+}  // namespace meshtrace::viewer

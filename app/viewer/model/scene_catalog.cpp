@@ -1,0 +1,66 @@
+#include "scene_catalog.h"
+
+#include <algorithm>
+#include <system_error>
+
+namespace meshtrace::viewer {
+
+namespace fs = std::filesystem;
+
+SceneFolder scanFolder(const fs::path& root, const std::string& title) {
+  SceneFolder folder{root, title, {}, {}};
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) {
+    folder.error = "not a folder: " + root.string();
+    return folder;
+  }
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_regular_file(ec) && it->path().extension() == ".sce")
+      folder.scenes.push_back(it->path());
+  }
+  if (ec) folder.error = "could not read " + root.string() + ": " + ec.message();
+  std::sort(folder.scenes.begin(), folder.scenes.end());
+  return folder;
+}
+
+std::vector<std::pair<fs::path, std::string>> defaultSceneRoots(const fs::path& executable) {
+  std::vector<fs::path> bases{fs::current_path()};
+  std::error_code ec;
+  const fs::path exe = fs::weakly_canonical(executable, ec);
+  // build/bin/viewer: the checkout is two folders up.
+  if (!ec && exe.has_parent_path()) bases.push_back(exe.parent_path().parent_path().parent_path());
+  std::vector<std::pair<fs::path, std::string>> roots;
+  const auto add = [&](const fs::path& p, const std::string& title) {
+    if (!fs::is_directory(p, ec)) return;
+    const fs::path canonical = fs::weakly_canonical(p, ec);
+    for (const auto& r : roots)
+      if (r.first == canonical) return;
+    roots.emplace_back(canonical, title);
+  };
+  for (const fs::path& base : bases) {
+    add(base / "scenes", "our scenes");
+    add(base.parent_path() / "shared" / "seed" / "scenes", "seed scenes");
+  }
+  return roots;
+}
+
+std::string sceneLabel(const SceneFolder& folder, const fs::path& scene) {
+  std::error_code ec;
+  const fs::path rel = fs::relative(scene, folder.root, ec);
+  return ec || rel.empty() ? scene.filename().string() : rel.string();
+}
+
+std::vector<fs::path> subfolders(const fs::path& dir) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+       !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    if (it->is_directory(ec) && it->path().filename().string().rfind('.', 0) != 0)
+      out.push_back(it->path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace meshtrace::viewer

@@ -1,0 +1,112 @@
+#include "views.h"
+
+#include <array>
+#include <cmath>
+
+#include "meshtrace/inspect_colors.h"
+
+namespace meshtrace::viewer {
+
+namespace {
+struct ViewInfo {
+  View view;
+  const char* name;
+  const char* label;
+};
+constexpr std::array<ViewInfo, kViewCount> kViews{{
+    {View::Color, "color", "Colour"},
+    {View::Normals, "normals", "Normals"},
+    {View::Depth, "depth", "Depth"},
+    {View::ObjectId, "object", "Object id"},
+    {View::TriangleId, "triangle", "Triangle id"},
+    {View::BoxHits, "boxes", "Box hits (heat)"},
+    {View::BvhCost, "cost", "Traversal cost (heat)"},
+    {View::NormalDeviation, "deviation", "Normal deviation vs OpenMesh"},
+    {View::SideBySide, "side-by-side", "Reference side by side"},
+    {View::Difference, "difference", "Difference to reference"},
+}};
+constexpr std::array<const char*, kOverlayCount> kOverlays{"none", "boxes", "cost"};
+}  // namespace
+
+const char* name(View view) { return kViews[static_cast<int>(view)].name; }
+const char* label(View view) { return kViews[static_cast<int>(view)].label; }
+const char* name(Overlay overlay) { return kOverlays[static_cast<int>(overlay)]; }
+
+std::optional<View> parseView(std::string_view n) {
+  for (const ViewInfo& v : kViews)
+    if (n == v.name) return v.view;
+  return std::nullopt;
+}
+
+std::optional<Overlay> parseOverlay(std::string_view n) {
+  for (int i = 0; i < kOverlayCount; ++i)
+    if (n == kOverlays[i]) return static_cast<Overlay>(i);
+  return std::nullopt;
+}
+
+bool needsProbes(View view) {
+  return view != View::Color && view != View::SideBySide && view != View::Difference;
+}
+bool needsProbes(Overlay overlay) { return overlay != Overlay::None; }
+
+double overlayValue(Overlay overlay, const PixelProbe& probe, const FalseColorScales& scales) {
+  switch (overlay) {
+    case Overlay::BoxHits:
+      return scales.boxMax > 0 ? probe.boxHits / scales.boxMax : 0.0;
+    case Overlay::BvhCost:
+      return scales.costMax > 0 ? probe.cost / scales.costMax : 0.0;
+    case Overlay::None:
+      break;
+  }
+  return 0.0;
+}
+
+double deviationAt(const PixelProbe& probe, const FalseColorScales& scales) {
+  if (!scales.scene || !probe.hit() || probe.kind != ObjectKind::Mesh ||
+      probe.index >= scales.meshDeviation.size())
+    return -1.0;
+  const std::vector<float>* dev = scales.meshDeviation[probe.index];
+  if (!dev) return -1.0;
+  const auto& tri = scales.scene->meshes[probe.index].triangles()[probe.triangle];
+  const double w[3] = {1.0 - probe.beta - probe.gamma, probe.beta, probe.gamma};
+  double d = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const float v = (*dev)[tri[k]];
+    if (v < 0.0f) return -1.0;
+    d += w[k] * v;
+  }
+  return d;
+}
+
+Color falseColor(View view, const PixelProbe& p, const FalseColorScales& s) {
+  switch (view) {
+    case View::BoxHits:
+      return heatColor(overlayValue(Overlay::BoxHits, p, s));
+    case View::BvhCost:
+      return heatColor(overlayValue(Overlay::BvhCost, p, s));
+    default:
+      break;
+  }
+  if (!p.hit()) return Color(kMissGrey);
+  switch (view) {
+    case View::Normals:
+      return normalColor(Vec3(p.normal[0], p.normal[1], p.normal[2]));
+    case View::Depth:
+      // Logarithmic: a floor running to the horizon would flatten a linear scale.
+      return depthColor(std::log(p.depth), std::log(std::max(s.depthNear, 1e-12)),
+                        std::log(std::max(s.depthFar, 1e-12)));
+    case View::ObjectId:
+      return idColor(static_cast<std::uint32_t>(p.object));
+    case View::TriangleId:
+      return p.kind == ObjectKind::Mesh ? idColor(p.triangle * 7919u + p.index) : Color(0.35);
+    case View::NormalDeviation: {
+      const double d = deviationAt(p, s);
+      return d < 0.0 ? Color(0.35) : heatColor(s.deviationMax > 0.0 ? d / s.deviationMax : 0.0);
+    }
+    default:
+      break;
+  }
+  return Color(kMissGrey);
+}
+
+}  // namespace meshtrace::viewer

@@ -1,0 +1,81 @@
+#include <algorithm>
+
+#include "../model/reference_lookup.h"
+#include "panels.h"
+
+namespace meshtrace::viewer {
+
+void setMessage(ViewerState& state, const std::string& message, bool error) {
+  state.message = message;
+  state.messageIsError = error;
+  std::fprintf(error ? stderr : stdout, "%s\n", message.c_str());
+}
+
+void openScene(ViewerState& state, const std::filesystem::path& file) {
+  state.timing.openedAt = std::chrono::steady_clock::now();
+  state.timing.awaitingFirstJob = true;
+  state.session.load(file);
+  state.hover.reset();
+  state.pinned.reset();
+  state.crosschecks.assign(state.session.meshes().size(), std::nullopt);
+  state.timing.loadMs = state.session.loadMs();
+  state.timing.maxFrameMs = 0.0;
+  state.timing.frames = 0;
+  state.reference.path.clear();
+  state.reference.image = Image8{};
+  state.reference.error.clear();
+  state.reference.errorHistory.clear();
+  state.reference.current.reset();
+  state.reference.differenceFor = ~0ull;
+  if (const auto ref = findReference(file)) state.reference.path = *ref;
+  state.reference.pathField = state.reference.path.string();
+  const std::string stem = file.stem().string();
+  state.savePath = stem + "-render.png";
+  state.screenshotPath = stem + "-window.png";
+  state.sceneSavePath = (file.parent_path() / (stem + "-modes.sce")).string();
+  // A load error shows in place of the image; the message line stays free.
+  state.message.clear();
+  if (!state.session.loaded()) std::fprintf(stderr, "%s\n", state.session.error().c_str());
+}
+
+void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::string& title) {
+  std::error_code ec;
+  const auto canonical = std::filesystem::weakly_canonical(dir, ec);
+  for (const SceneFolder& f : state.folders)
+    if (f.root == canonical) return;
+  state.folders.push_back(scanFolder(ec ? dir : canonical, title));
+}
+
+void openPath(ViewerState& state, const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    addFolder(state, path, path.filename().string());
+  } else if (path.extension() == ".sce") {
+    openScene(state, path);
+  } else {
+    setMessage(state, "not a .sce file or a folder: " + path.string(), true);
+  }
+}
+
+std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name) {
+  const auto& meshes = session.meshes();
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    if (meshes[i].name == name) return i;
+  if (!name.empty() && std::all_of(name.begin(), name.end(), ::isdigit)) {
+    const std::size_t i = std::stoul(name);
+    if (i < meshes.size()) return i;
+  }
+  return std::nullopt;
+}
+
+std::string describeObject(const ViewerState& state, const RenderDisplay& display,
+                           const PrimitiveRef& ref) {
+  std::string s = std::string(toString(ref.kind)) + " #" + std::to_string(ref.object);
+  if (ref.kind == ObjectKind::Mesh && display.prepared()) {
+    const std::uint32_t m = state.session.sceneMesh(ref.object);
+    s = "mesh '" + state.session.meshes()[m].name + "' #" + std::to_string(m);
+  }
+  return s;
+}
+
+}  // namespace meshtrace::viewer

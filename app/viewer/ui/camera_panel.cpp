@@ -1,0 +1,24 @@
+// The camera: its .sce line (print, copy), reset, and how the mouse moves it.
+#include <imgui.h>
+
+#include "../model/camera_control.h"
+#include "panels.h"
+
+namespace meshtrace::viewer {
+
+void drawCameraPanel(ViewerState& state) {
+  if (!state.session.loaded()) return;
+  std::string line = cameraLine(state.session.camera());
+  ImGui::TextWrapped("%s", line.c_str());
+  if (ImGui::Button("Copy")) {
+    ImGui::SetClipboardText(line.c_str());
+    setMessage(state, "copied: " + line, false);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Print")) std::printf("%s\n", line.c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("Reset camera")) state.session.resetCamera();
+  ImGui::TextDisabled("Left drag orbits, right drag pans, the wheel zooms.");
+}
+
+}  // namespace meshtrace::viewer

@@ -1,0 +1,79 @@
+// Render progress and timings, the view, overlay and anti-aliasing controls,
+// and the legend of the heat maps shown.
+#include <imgui.h>
+
+#include "meshtrace/inspect.h"
+#include "panels.h"
+
+namespace meshtrace::viewer {
+
+namespace {
+std::string ms(const ViewerState& state, double v) {
+  if (state.options.hideTimings) return "-";
+  if (v < 0) return "...";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f ms", v);
+  return buf;
+}
+}  // namespace
+
+void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
+  const ProgressiveStatus s = display.status();
+  if (display.active()) {
+    char overlayText[64];
+    if (s.exactDone)
+      std::snprintf(overlayText, sizeof overlayText, "exact%s, %d sample%s per pixel",
+                    s.finished ? "" : " + AA", s.samplesPerPixel,
+                    s.samplesPerPixel == 1 ? "" : "s");
+    else
+      std::snprintf(overlayText, sizeof overlayText, "pass %d of %d, %.0f%%", s.passesDone + 1,
+                    s.passCount, 100.0 * s.exactFraction);
+    const float fraction = s.passCount > 0 ? float(s.passesDone) / float(s.passCount) : 0.0f;
+    ImGui::ProgressBar(s.finished ? 1.0f : std::max(fraction, float(s.exactFraction) * 0.999f),
+                       ImVec2(-1, 0), overlayText);
+    const std::uint64_t rays =
+        s.counters.primaryRays + s.counters.shadowRays + s.counters.reflectionRays;
+    const double seconds = s.elapsedMs / 1000.0;
+    ImGui::Text("elapsed %s", ms(state, s.elapsedMs).c_str());
+    ImGui::SameLine();
+    if (state.options.hideTimings)
+      ImGui::Text("  rays/s -");
+    else
+      ImGui::Text("  %.2f M rays/s", seconds > 0 ? rays / seconds / 1e6 : 0.0);
+    ImGui::Text("load %s  first image %s  exact %s", ms(state, state.timing.loadMs).c_str(),
+                ms(state, s.firstCoarseMs).c_str(), ms(state, s.exactMs).c_str());
+    ImGui::Text("%d threads  %llu rays  longest frame %s", display.threads(),
+                static_cast<unsigned long long>(rays), ms(state, state.timing.maxFrameMs).c_str());
+  }
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::BeginCombo("view", label(state.view))) {
+    for (int i = 0; i < kViewCount; ++i) {
+      const View v = static_cast<View>(i);
+      if (ImGui::Selectable(label(v), v == state.view)) state.view = v;
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SetNextItemWidth(200);
+  static const char* overlayLabels[kOverlayCount] = {"none", "box hits", "traversal cost"};
+  int overlay = static_cast<int>(state.overlay);
+  if (ImGui::Combo("overlay", &overlay, overlayLabels, kOverlayCount))
+    state.overlay = static_cast<Overlay>(overlay);
+  if (state.overlay != Overlay::None) {
+    ImGui::SetNextItemWidth(200);
+    ImGui::SliderFloat("opacity", &state.opacity, 0.0f, 1.0f, "%.2f");
+  }
+  ImGui::SetNextItemWidth(200);
+  ImGui::SliderInt("AA samples", &state.extraSamples, 0, 16);
+  const FalseColorScales& scales = display.scales();
+  const bool boxes = state.view == View::BoxHits || state.overlay == Overlay::BoxHits;
+  const bool cost = state.view == View::BvhCost || state.overlay == Overlay::BvhCost;
+  if (boxes) drawHeatLegend("mesh boxes the primary ray meets", scales.boxMax, "boxes");
+  if (cost)
+    drawHeatLegend("nodes + boxes + primitives tested (primary ray)", scales.costMax, "tests");
+  if (state.view == View::NormalDeviation)
+    drawHeatLegend("vertex normal vs OpenMesh, interpolated", scales.deviationMax, "deg");
+  if (state.view == View::Depth && scales.depthNear >= 0)
+    ImGui::Text("depth: white %.3g to dark %.3g (log scale)", scales.depthNear, scales.depthFar);
+}
+
+}  // namespace meshtrace::viewer

@@ -1,0 +1,29 @@
+// Saving the render as PNG and the whole window as a screenshot.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "panels.h"
+
+namespace meshtrace::viewer {
+
+void drawSavePanel(ViewerState& state, RenderDisplay& display) {
+  ImGui::SetNextItemWidth(-130);
+  ImGui::InputText("##render", &state.savePath);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(display.frame().width == 0);
+  if (ImGui::Button("Save render")) {
+    try {
+      writeImage(display.colorImage(), state.savePath);
+      setMessage(state, "saved " + state.savePath, false);
+    } catch (const std::exception& e) {
+      setMessage(state, e.what(), true);
+    }
+  }
+  ImGui::EndDisabled();
+  ImGui::SetNextItemWidth(-130);
+  ImGui::InputText("##window", &state.screenshotPath);
+  ImGui::SameLine();
+  if (ImGui::Button("Save window")) state.screenshotRequest = state.screenshotPath;
+}
+
+}  // namespace meshtrace::viewer

@@ -1,0 +1,82 @@
+#pragma once
+// What the viewer's panels share: the options, the scene session, the scene
+// list, the view settings, the inspector's pixel, the cross-check results,
+// the reference image and the messages to show.
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "../gl/texture.h"
+#include "../model/options.h"
+#include "../model/scene_catalog.h"
+#include "../model/session.h"
+#include "../model/views.h"
+#include "meshtrace/image_compare.h"
+#include "normals_crosscheck.h"
+#include "render_display.h"
+
+namespace meshtrace::viewer {
+
+struct PixelRef {
+  int x = 0, y = 0;  // image pixel, y = 0 the bottom row
+  bool operator==(const PixelRef&) const = default;
+};
+
+struct ReferenceState {
+  std::filesystem::path path;  // empty: none
+  std::string pathField;
+  std::string error;
+  Image8 image;
+  gl::Texture texture, difference;
+  std::vector<std::uint8_t> differenceRgba;
+  std::uint64_t differenceFor = ~0ull;  // tile versions summed, to notice changes
+  std::vector<float> errorHistory;      // RMSE every 100 ms of the current render
+  std::uint64_t historyJob = 0;
+  double lastSampleMs = -1.0;
+  std::optional<ImageDifference> current;
+  bool panelOpen = false;  // the compare panel was drawn last frame
+};
+
+struct TimingStats {
+  std::chrono::steady_clock::time_point openedAt;  // when the scene was asked for
+  bool awaitingFirstJob = false;
+  double openToRenderStartMs = -1.0;  // from opening (load included) to its render starting
+  double loadMs = 0.0;
+  double maxFrameMs = 0.0;  // while rendering, after the first frames of a job
+  double lastFrameMs = 0.0;
+  std::vector<float> frameHistory;
+  int frames = 0;
+};
+
+struct ViewerState {
+  ViewerOptions options;
+  std::filesystem::path executable;
+  SceneSession session;
+  std::vector<SceneFolder> folders;
+  std::string pathField;
+  std::string browseDir;
+  bool browsing = false;
+
+  View view = View::Color;
+  Overlay overlay = Overlay::None;
+  float opacity = 0.6f;
+  int extraSamples = 0;
+  TraceOptions trace;
+
+  std::optional<PixelRef> hover, pinned;
+
+  // Per scene mesh, the OpenMesh cross-check (computed on demand).
+  std::vector<std::optional<crosscheck::NormalsReport>> crosschecks;
+  double crosscheckMs = 0.0;
+
+  ReferenceState reference;
+  TimingStats timing;
+  std::string savePath, screenshotPath, sceneSavePath;
+  std::string screenshotRequest;  // set by the UI, served after the frame is drawn
+  std::string message;            // last action's result
+  bool messageIsError = false;
+};
+
+}  // namespace meshtrace::viewer
