@@ -13,6 +13,7 @@ Counters& Counters::operator+=(const Counters& o) {
   sphereTests += o.sphereTests;
   planeTests += o.planeTests;
   cylinderTests += o.cylinderTests;
+  nodeVisits += o.nodeVisits;
   return *this;
 }
 
@@ -21,7 +22,8 @@ std::string Counters::describe() const {
   s << "rays: " << primaryRays << " primary, " << shadowRays << " shadow, " << reflectionRays
     << " reflection\n"
     << "tests: " << boxTests << " box, " << triangleTests << " triangle, " << sphereTests
-    << " sphere, " << planeTests << " plane, " << cylinderTests << " cylinder\n";
+    << " sphere, " << planeTests << " plane, " << cylinderTests << " cylinder\n"
+    << "bvh: " << nodeVisits << " node visits\n";
   return s.str();
 }
 

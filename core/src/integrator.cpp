@@ -15,7 +15,7 @@ Color Integrator::localColor(const Vec3& viewDir, const SurfacePoint& sp,
     const double nl = glm::dot(sp.normal, l);
     // A light behind the surface adds nothing, so its shadow ray is left out.
     if (!(nl > 0.0)) continue;
-    const Ray shadow{spawnOrigin(sp.point, sp.normal, l), l};
+    const Ray shadow{spawnOrigin(sp, l), l};
     ++counters.shadowRays;
     // The blocker test runs to the light's distance from the shadow ray's own
     // origin: a blocker near the light counts as much as one near the point.
@@ -33,14 +33,14 @@ Color Integrator::trace(const Ray& ray, int level, Counters& counters) const {
   const Scene& scene = intersector_.scene();
   Hit hit;
   if (!intersector_.closestHit(ray, kSpawnTMin, hit, counters)) return scene.background;
-  const SurfacePoint sp = surfaceAt(scene, ray, hit);
+  const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector_.options().triangle.precision);
   const Color local = localColor(-ray.direction, sp, counters);
   const double mirror = sp.material->mirror;
   // The deepest level keeps its local colour rather than mixing with black.
   if (mirror <= 0.0 || level >= scene.depth) return local;
   const Vec3 d = ray.direction;
   const Vec3 reflected = d - 2.0 * glm::dot(d, sp.normal) * sp.normal;
-  const Ray bounce{spawnOrigin(sp.point, sp.normal, reflected), glm::normalize(reflected)};
+  const Ray bounce{spawnOrigin(sp, reflected), glm::normalize(reflected)};
   ++counters.reflectionRays;
   return (1.0 - mirror) * local + mirror * trace(bounce, level + 1, counters);
 }

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "meshtrace/triangle.h"
+#include "primitive_query.h"
 
 namespace meshtrace {
 
@@ -11,6 +11,7 @@ const char* toString(AccelMethod method) {
   switch (method) {
     case AccelMethod::None: return "none";
     case AccelMethod::BoundingBox: return "aabb";
+    case AccelMethod::Bvh: return "bvh";
   }
   return "?";
 }
@@ -18,90 +19,79 @@ const char* toString(AccelMethod method) {
 AccelMethod parseAccelMethod(std::string_view name) {
   if (name == "none") return AccelMethod::None;
   if (name == "aabb") return AccelMethod::BoundingBox;
+  if (name == "bvh") return AccelMethod::Bvh;
   throw std::invalid_argument("unknown acceleration method '" + std::string(name) +
-                              "' (use none or aabb)");
+                              "' (use none, aabb or bvh)");
 }
 
 SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& options)
-    : scene_(scene), options_(options) {}
+    : scene_(scene), options_(options) {
+  if (options.accel == AccelMethod::Bvh) bvh_ = std::make_unique<SceneBvh>(scene, options.bvh);
+}
 
-bool SceneIntersector::intersectMesh(std::uint32_t index, const Ray& ray,
-                                     const RayInverse& inverse, double tMin, Hit& hit,
-                                     bool anyHit, Counters& counters) const {
-  const Mesh& mesh = scene_.meshes[index];
-  if (options_.accel == AccelMethod::BoundingBox) {
-    ++counters.boxTests;
-    double tEnter, tExit;
-    if (!intersectSlabs(mesh.bounds(), inverse, tMin, hit.t, tEnter, tExit)) return false;
-  }
-  const auto& v = mesh.vertices();
-  const auto& tris = mesh.triangles();
-  bool found = false;
-  for (std::uint32_t i = 0; i < tris.size(); ++i) {
-    ++counters.triangleTests;
-    TriangleHit th;
-    if (intersectTriangle(v[tris[i][0]], v[tris[i][1]], v[tris[i][2]], ray, tMin, hit.t, th)) {
-      hit.t = th.t;
-      hit.ref = {ObjectKind::Mesh, index, i};
-      hit.beta = th.beta;
-      hit.gamma = th.gamma;
-      found = true;
-      if (anyHit) return true;
-    }
-  }
-  return found;
+SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& options,
+                                   const ExternalIntersector& external)
+    : scene_(scene), options_(options), external_(&external) {}
+
+SceneIntersector::~SceneIntersector() = default;
+
+bool SceneIntersector::meshMayBeHit(std::uint32_t index, const RayInverse& inverse, double tMin,
+                                    double tMax, Counters& counters) const {
+  if (options_.accel != AccelMethod::BoundingBox) return true;
+  ++counters.boxTests;
+  double tEnter, tExit;
+  return intersectSlabs(scene_.meshes[index].bounds(), inverse, tMin, tMax, tEnter, tExit);
 }
 
 bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit,
                                   Counters& counters) const {
-  bool found = false;
-  const auto test = [&](ObjectKind kind, std::uint32_t i, bool hitIt) {
-    if (hitIt) {
-      hit.ref = {kind, i, 0};
-      found = true;
-    }
-  };
-  for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i) {
-    ++counters.sphereTests;
-    test(ObjectKind::Sphere, i, intersect(scene_.spheres[i], ray, tMin, hit.t));
+  if (external_) return external_->closestHit(ray, tMin, hit, counters);
+  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters);
+  ClosestHit closest(hit);
+  if (bvh_) {
+    bvh_->closestHit(query, closest, counters);
+    return closest.found();
   }
-  for (std::uint32_t i = 0; i < scene_.planes.size(); ++i) {
-    ++counters.planeTests;
-    test(ObjectKind::Plane, i, intersect(scene_.planes[i], ray, tMin, hit.t));
-  }
-  for (std::uint32_t i = 0; i < scene_.cylinders.size(); ++i) {
-    ++counters.cylinderTests;
-    test(ObjectKind::Cylinder, i, intersect(scene_.cylinders[i], ray, tMin, hit.t));
-  }
+  // Brute force, in the order that defines ties (primitive_query.h).
+  for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i)
+    query.offerShape(ObjectKind::Sphere, i, closest);
+  for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
+    query.offerShape(ObjectKind::Plane, i, closest);
+  for (std::uint32_t i = 0; i < scene_.cylinders.size(); ++i)
+    query.offerShape(ObjectKind::Cylinder, i, closest);
   if (!scene_.meshes.empty()) {
     const RayInverse inverse(ray);
-    for (std::uint32_t i = 0; i < scene_.meshes.size(); ++i)
-      found |= intersectMesh(i, ray, inverse, tMin, hit, false, counters);
+    for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
+      if (!meshMayBeHit(m, inverse, tMin, hit.t, counters)) continue;
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
+      for (std::uint32_t t = 0; t < count; ++t) query.offerTriangle(m, t, closest);
+    }
   }
-  return found;
+  return closest.found();
 }
 
 bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax,
                                 Counters& counters) const {
-  double t = tMax;
-  for (const Sphere& s : scene_.spheres) {
-    ++counters.sphereTests;
-    if (intersect(s, ray, tMin, t)) return true;
-  }
-  for (const Plane& p : scene_.planes) {
-    ++counters.planeTests;
-    if (intersect(p, ray, tMin, t)) return true;
-  }
-  for (const Cylinder& c : scene_.cylinders) {
-    ++counters.cylinderTests;
-    if (intersect(c, ray, tMin, t)) return true;
-  }
+  if (external_) return external_->occluded(ray, tMin, tMax, counters);
+  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters);
+  if (bvh_) return bvh_->occluded(query, tMax, counters);
+  const auto blocks = [&](ObjectKind kind, std::size_t n) {
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (query.shapeBlocks(kind, i, tMax)) return true;
+    return false;
+  };
+  if (blocks(ObjectKind::Sphere, scene_.spheres.size()) ||
+      blocks(ObjectKind::Plane, scene_.planes.size()) ||
+      blocks(ObjectKind::Cylinder, scene_.cylinders.size()))
+    return true;
   if (!scene_.meshes.empty()) {
     const RayInverse inverse(ray);
-    Hit hit;
-    hit.t = tMax;
-    for (std::uint32_t i = 0; i < scene_.meshes.size(); ++i)
-      if (intersectMesh(i, ray, inverse, tMin, hit, true, counters)) return true;
+    for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
+      if (!meshMayBeHit(m, inverse, tMin, tMax, counters)) continue;
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
+      for (std::uint32_t t = 0; t < count; ++t)
+        if (query.triangleBlocks(m, t, tMax)) return true;
+    }
   }
   return false;
 }

@@ -1,5 +1,8 @@
 #include "meshtrace/mesh.h"
 
+#include <algorithm>
+#include <unordered_set>
+
 #include "meshtrace/triangle.h"
 
 namespace meshtrace {
@@ -9,9 +12,18 @@ const char* toString(Shading shading) { return shading == Shading::Flat ? "FLAT"
 std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
                                              const std::vector<Vec3>& triangleNormals) {
   std::vector<Vec3> normals(mesh.vertices.size(), Vec3(0.0));
+  // A triangle listed twice (the same three vertices, in any order) counts
+  // once, so duplicates in a file do not tilt the normals of their corners.
+  const auto hash = [](const TriangleIndices& t) {
+    return std::hash<std::uint64_t>()((std::uint64_t{t[0]} << 42) ^ (std::uint64_t{t[1]} << 21) ^ t[2]);
+  };
+  std::unordered_set<TriangleIndices, decltype(hash)> seen(mesh.triangles.size(), hash);
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const TriangleIndices& tri = mesh.triangles[i];
     if (triangleNormals[i] == Vec3(0.0)) continue;  // degenerate: no direction to give
+    TriangleIndices sorted = tri;
+    std::sort(sorted.begin(), sorted.end());
+    if (!seen.insert(sorted).second) continue;
     const Vec3 w = cornerAngles(mesh.vertices[tri[0]], mesh.vertices[tri[1]],
                                 mesh.vertices[tri[2]]);
     for (int k = 0; k < 3; ++k) normals[tri[k]] += w[k] * triangleNormals[i];

@@ -38,11 +38,15 @@ Counters forEachPixel(int width, int height, int threads, const Body& body) {
 }  // namespace
 
 Image render(const Scene& scene, const RenderOptions& options, Counters* counters) {
-  const SceneIntersector intersector(scene, options.trace);
+  return render(SceneIntersector(scene, options.trace), options.threads, counters);
+}
+
+Image render(const SceneIntersector& intersector, int threads, Counters* counters) {
+  const Scene& scene = intersector.scene();
   const Integrator integrator(intersector);
   Image image(scene.camera.width(), scene.camera.height());
   const Counters total = forEachPixel(
-      image.width, image.height, options.threads,
+      image.width, image.height, threads,
       [&](int x, int y, int row, Counters& c) { image.at(x, row) = integrator.pixel(x, y, c); });
   if (counters) *counters += total;
   return image;

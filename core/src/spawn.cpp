@@ -1,17 +1,35 @@
 #include "meshtrace/spawn.h"
 
+#include <cmath>
+
 namespace meshtrace {
 
 namespace {
-// Offset along the normal, relative to the size of the hit point's
-// coordinates plus a floor for points near the origin.
-constexpr double kRelativeOffset = 1e-9;
-constexpr double kAbsoluteOffset = 1e-9;
+// The float nearest to x in the direction of `sign` (or to nearest if 0):
+// rounding never brings the origin back toward the surface.
+double toFloatAway(double x, double sign) {
+  float f = static_cast<float>(x);
+  if (sign > 0.0 && double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (sign < 0.0 && double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
 }  // namespace
 
-Vec3 spawnOrigin(const Vec3& p, const Vec3& n, const Vec3& direction) {
-  const double offset = kAbsoluteOffset + kRelativeOffset * maxAbsComponent(p);
-  return glm::dot(n, direction) >= 0.0 ? p + offset * n : p - offset * n;
+Vec3 spawnOrigin(const SurfacePoint& sp, const Vec3& direction) {
+  const Vec3& n = sp.geometricNormal;
+  // The distance along n that leaves the error box: the support of the box
+  // in direction n (pbrt-v4 OffsetRayOrigin).
+  const double d = glm::dot(glm::abs(n), sp.error);
+  Vec3 offset = d * n;
+  if (glm::dot(direction, n) < 0.0) offset = -offset;
+  Vec3 po = sp.point + offset;
+  // The addition rounds to nearest, possibly back toward p: step one ulp on.
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0.0) po[i] = std::nextafter(po[i], kInfinity);
+    if (offset[i] < 0.0) po[i] = std::nextafter(po[i], -kInfinity);
+    if (sp.precision == Precision::Single) po[i] = toFloatAway(po[i], offset[i]);
+  }
+  return po;
 }
 
 }  // namespace meshtrace

@@ -1,30 +1,54 @@
 #include "meshtrace/triangle.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace meshtrace {
+
+namespace {
+template <typename E>
+struct Named {
+  E value;
+  const char* name;
+};
+constexpr Named<TriangleTest> kTests[] = {{TriangleTest::Cramer, "cramer"},
+                                          {TriangleTest::MollerTrumbore, "mt"},
+                                          {TriangleTest::Watertight, "watertight"}};
+constexpr Named<Precision> kPrecisions[] = {{Precision::Double, "double"},
+                                            {Precision::Single, "single"}};
+
+template <typename E, std::size_t N>
+const char* nameOf(const Named<E> (&table)[N], E value) {
+  for (const Named<E>& n : table)
+    if (n.value == value) return n.name;
+  return "?";
+}
+
+// Throws std::invalid_argument listing the known names.
+template <typename E, std::size_t N>
+E parseNamed(const Named<E> (&table)[N], std::string_view name, const char* what) {
+  std::string known;
+  for (const Named<E>& n : table) {
+    if (name == n.name) return n.value;
+    known += (known.empty() ? "" : ", ") + std::string(n.name);
+  }
+  throw std::invalid_argument("unknown " + std::string(what) + " '" + std::string(name) +
+                              "' (use " + known + ")");
+}
+}  // namespace
+
+const char* toString(TriangleTest test) { return nameOf(kTests, test); }
+const char* toString(Precision precision) { return nameOf(kPrecisions, precision); }
+TriangleTest parseTriangleTest(std::string_view name) {
+  return parseNamed(kTests, name, "triangle test");
+}
+Precision parsePrecision(std::string_view name) {
+  return parseNamed(kPrecisions, name, "precision");
+}
 
 bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& ray,
                        double tMin, double tMax, TriangleHit& out) {
-  // Substituting alpha = 1 - beta - gamma gives the 3x3 system
-  //   [B-A  C-A  -d] (beta, gamma, t)^T = o - A,
-  // solved by Cramer's rule. Each determinant is a triple product; the three
-  // numerators share the cross products below.
-  const Vec3 e1 = b - a;
-  const Vec3 e2 = c - a;
-  const Vec3 s = ray.origin - a;
-  const Vec3 n = glm::cross(e1, e2);  // det[e1 e2 x] = n . x
-  const double det = -glm::dot(n, ray.direction);
-  if (det == 0.0) return false;  // ray parallel to the plane, or degenerate triangle
-  const Vec3 sxd = glm::cross(s, ray.direction);
-  const double inv = 1.0 / det;
-  // det[s e2 -d] = e2.(s x d) and det[e1 s -d] = -e1.(s x d).
-  const double beta = glm::dot(e2, sxd) * inv;
-  if (beta < 0.0) return false;
-  const double gamma = -glm::dot(e1, sxd) * inv;
-  if (gamma < 0.0 || beta + gamma > 1.0) return false;
-  const double t = glm::dot(n, s) * inv;
-  if (t <= tMin || t >= tMax) return false;
-  out = {t, beta, gamma};
-  return true;
+  return TriangleRay(ray, TriangleKernel{}).intersect(a, b, c, tMin, tMax, out);
 }
 
 Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c) {

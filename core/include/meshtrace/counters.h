@@ -14,6 +14,7 @@ struct Counters {
   std::uint64_t sphereTests = 0;
   std::uint64_t planeTests = 0;
   std::uint64_t cylinderTests = 0;
+  std::uint64_t nodeVisits = 0;  // BVH nodes entered, top level and meshes
 
   Counters& operator+=(const Counters& o);
   std::string describe() const;

@@ -8,6 +8,8 @@
 
 namespace meshtrace {
 
+// Meshes too small for a BVH are listed by the BVH itself
+// (SceneBvhStats::leftOut), which knows its threshold.
 std::vector<std::string> leftOut(const Scene& scene);
 
 // Vertex normals held by the scene's meshes (only PHONG meshes compute them).

@@ -13,6 +13,8 @@ struct RenderOptions {
 };
 
 Image render(const Scene& scene, const RenderOptions& options, Counters* counters = nullptr);
+// With an intersector built beforehand (so that its build can be timed apart).
+Image render(const SceneIntersector& intersector, int threads, Counters* counters = nullptr);
 
 // Per pixel, the number of mesh bounding boxes the primary ray meets at t >= 0.
 struct BoxHitCounts {

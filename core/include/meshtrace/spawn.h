@@ -1,16 +1,36 @@
 #pragma once
 // Where secondary (shadow and reflection) rays start, and the smallest ray
 // parameter they accept. Kept in one place: every spawned ray goes through it.
+//
+// The offset follows pbrt-v4 (Pharr, Jakob & Humphreys, 4th ed., 6.8.6): every
+// hit point carries a per-component bound on its rounding error (see
+// surfaceAt); the origin moves along the geometric normal just far enough to
+// leave that error box, and is then rounded one ulp further away. The true
+// surface therefore lies strictly behind the new origin at any scale, and no
+// fixed epsilon is needed.
+#include <limits>
+
 #include "meshtrace/math.h"
+#include "meshtrace/surface.h"
 
 namespace meshtrace {
 
-// The origin of a ray leaving surface point p with unit normal n on the side
-// that `direction` points to.
-Vec3 spawnOrigin(const Vec3& p, const Vec3& n, const Vec3& direction);
+// gamma(n) = n u / (1 - n u), u the unit roundoff of Real: the bound on the
+// relative error after n roundings (Higham; pbrt 6.8.1).
+template <typename Real>
+constexpr Real roundingGamma(int n) {
+  constexpr Real u = std::numeric_limits<Real>::epsilon() / 2;
+  return (n * u) / (1 - n * u);
+}
 
-// Lower bound on t for a spawned ray; hits closer than this are the surface
-// the ray left.
+// The origin of a ray leaving `sp` on the side of its geometric normal that
+// `direction` points to. With Precision::Single the origin is representable
+// as float, rounded away from the surface, so a single-precision kernel sees
+// the same point.
+Vec3 spawnOrigin(const SurfacePoint& sp, const Vec3& direction);
+
+// Lower bound on t for a spawned ray. Zero: the offset origin is already off
+// the surface, so every hit at t > 0 is a real one.
 inline constexpr double kSpawnTMin = 0.0;
 
 }  // namespace meshtrace

@@ -1,0 +1,349 @@
+// bench: our BVH against Embree 3 on the same scenes and rays, in one run.
+// Every speed figure is also given as a ratio to Embree measured in the same
+// run, since only ratios hold on a shared, noisy machine.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "crossover.h"
+#include "embree_intersector.h"
+#include "mesh_scenes.h"
+#include "meshtrace/image.h"
+#include "meshtrace/render.h"
+#include "meshtrace/scene_parser.h"
+#include "rays.h"
+
+using namespace meshtrace;
+using namespace meshtrace::bench;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Brute force gets about this many seconds per measurement (a strided
+// subset of the rays), and a full render only when it would end within
+// kSlowRenderLimit.
+constexpr double kSubsetSeconds = 0.5;
+constexpr double kSlowRenderLimit = 30.0;
+
+struct Throughput {
+  double primary[2] = {0, 0};  // Mrays/s on 1 thread, on all
+  double shadow[2] = {0, 0};
+};
+
+struct EngineFigures {
+  std::optional<double> buildMs, bytesPerTriangle, renderMs;
+  Throughput rays;
+  bool measured = false;
+};
+
+struct SceneFigures {
+  std::string name;
+  std::size_t triangles = 0;
+  double loadMs = 0;
+  EngineFigures ours, embree, embreeHq, aabb, none;
+  std::size_t verifiedRays = 0, differences = 0;
+};
+
+// Mrays/s for `trace` over the whole set (or every stride-th ray).
+template <typename Trace>
+double mrays(std::size_t n, std::size_t stride, int threads, const Trace& trace) {
+  const double s = timeRays(n, stride, threads, 3, trace);
+  return double((n + stride - 1) / stride) / s * 1e-6;
+}
+
+std::size_t meshBytes(const Scene& scene) {
+  std::size_t b = 0;
+  for (const Mesh& m : scene.meshes)
+    b += m.vertices().size() * sizeof(Vec3) + m.triangles().size() * sizeof(TriangleIndices);
+  return b;
+}
+
+// Load, build, render and write, as a `raytrace SCENE OUT.png` run does.
+template <typename MakeIntersector>
+double fullRunMs(const std::filesystem::path& file, const std::filesystem::path& out, int threads,
+                 const MakeIntersector& make) {
+  const auto start = Clock::now();
+  const Scene scene = loadScene(file);
+  const auto intersector = make(scene);
+  const Image image = render(intersector->intersector, threads);
+  writeImage(quantize(image), out);
+  return secondsSince(start) * 1e3;
+}
+
+TraceOptions withAccel(AccelMethod m) {
+  TraceOptions o;
+  o.accel = m;
+  return o;
+}
+
+struct Ours {
+  SceneIntersector intersector;
+  Ours(const Scene& s, AccelMethod m) : intersector(s, withAccel(m)) {}
+};
+struct WithEmbree {
+  EmbreeIntersector embree;
+  SceneIntersector intersector;
+  // Embree's hits are float: shading spawns rays as for a float kernel.
+  explicit WithEmbree(const Scene& s)
+      : embree(s, RTC_BUILD_QUALITY_MEDIUM),
+        intersector(s, singlePrecisionHits(), embree) {}
+  static TraceOptions singlePrecisionHits() {
+    TraceOptions o;
+    o.triangle.precision = Precision::Single;
+    return o;
+  }
+};
+
+void measureOurs(const SceneIntersector& is, const RaySet& primary, const RaySet& shadow,
+                 std::size_t stride, int threads, Throughput& out) {
+  for (int k = 0; k < 2; ++k) {
+    const int t = k == 0 ? 1 : threads;
+    out.primary[k] = mrays(primary.rays.size(), stride, t, [&](std::size_t i) {
+      Hit hit;
+      Counters c;
+      is.closestHit(primary.rays[i], 0.0, hit, c);
+    });
+    out.shadow[k] = mrays(shadow.rays.size(), stride, t, [&](std::size_t i) {
+      Counters c;
+      is.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c);
+    });
+  }
+}
+
+void measureEmbree(const EmbreeIntersector& e, const RaySet& primary, const RaySet& shadow,
+                   int threads, Throughput& out) {
+  std::vector<RTCRayHit> p, s;
+  for (std::size_t i = 0; i < primary.rays.size(); ++i)
+    p.push_back(EmbreeIntersector::prepare(primary.rays[i], 0.0, primary.tMax[i]));
+  for (std::size_t i = 0; i < shadow.rays.size(); ++i)
+    s.push_back(EmbreeIntersector::prepare(shadow.rays[i], 0.0, shadow.tMax[i]));
+  for (int k = 0; k < 2; ++k) {
+    const int t = k == 0 ? 1 : threads;
+    out.primary[k] = mrays(p.size(), 1, t, [&](std::size_t i) {
+      RTCRayHit rh = p[i];
+      e.intersect1(rh);
+    });
+    out.shadow[k] = mrays(s.size(), 1, t, [&](std::size_t i) {
+      RTCRay r = s[i].ray;
+      e.occluded1(r);
+    });
+  }
+}
+
+// aabb and none on a strided subset sized to take about kSubsetSeconds.
+std::size_t subsetStride(const SceneIntersector& is, const RaySet& primary) {
+  const std::size_t n = primary.rays.size();
+  const std::size_t probe = std::max<std::size_t>(1, n / 64);
+  const double s = timeRays(n, probe, 1, 1, [&](std::size_t i) {
+    Hit hit;
+    Counters c;
+    is.closestHit(primary.rays[i], 0.0, hit, c);
+  });
+  const double perRay = s / double((n + probe - 1) / probe);
+  const auto wanted = static_cast<std::size_t>(kSubsetSeconds / std::max(perRay, 1e-9));
+  return std::max<std::size_t>(1, n / std::max<std::size_t>(wanted, 1));
+}
+
+// BVH hits against brute force on every stride-th ray of both sets.
+void verify(const SceneIntersector& bvh, const SceneIntersector& none, const RaySet& primary,
+            const RaySet& shadow, std::size_t stride, SceneFigures& f) {
+  Counters c;
+  for (std::size_t i = 0; i < primary.rays.size(); i += stride) {
+    Hit a, b;
+    const bool fa = bvh.closestHit(primary.rays[i], 0.0, a, c);
+    const bool fb = none.closestHit(primary.rays[i], 0.0, b, c);
+    ++f.verifiedRays;
+    f.differences += fa != fb || (fa && (a.t != b.t || a.ref.object != b.ref.object ||
+                                         a.ref.triangle != b.ref.triangle));
+  }
+  for (std::size_t i = 0; i < shadow.rays.size(); i += stride) {
+    ++f.verifiedRays;
+    f.differences += bvh.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c) !=
+                     none.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c);
+  }
+}
+
+SceneFigures measure(const std::filesystem::path& file, const std::filesystem::path& outDir,
+                     int threads, bool slow) {
+  SceneFigures f;
+  f.name = file.stem().string();
+  auto start = Clock::now();
+  const Scene scene = loadScene(file);
+  f.loadMs = secondsSince(start) * 1e3;
+  f.triangles = scene.triangleCount();
+  const double tris = double(std::max<std::size_t>(f.triangles, 1));
+
+  start = Clock::now();
+  const SceneIntersector ours(scene, TraceOptions{});
+  f.ours.buildMs = secondsSince(start) * 1e3;
+  const SceneBvhStats& st = ours.bvh()->stats();
+  f.ours.bytesPerTriangle = (st.meshBvhBytes + st.topLevelBytes + meshBytes(scene)) / tris;
+  const EmbreeIntersector embree(scene, RTC_BUILD_QUALITY_MEDIUM);
+  const EmbreeIntersector embreeHq(scene, RTC_BUILD_QUALITY_HIGH);
+  f.embree.buildMs = embree.buildSeconds() * 1e3;
+  f.embreeHq.buildMs = embreeHq.buildSeconds() * 1e3;
+  f.embree.bytesPerTriangle = embree.bytes() / tris;
+  f.embreeHq.bytesPerTriangle = embreeHq.bytes() / tris;
+
+  const RaySet primary = primaryRays(scene);
+  const RaySet shadow = shadowRays(scene, ours, primary);
+  measureOurs(ours, primary, shadow, 1, threads, f.ours.rays);
+  measureEmbree(embree, primary, shadow, threads, f.embree.rays);
+  measureEmbree(embreeHq, primary, shadow, threads, f.embreeHq.rays);
+  f.ours.measured = f.embree.measured = f.embreeHq.measured = true;
+
+  const auto out = outDir / (f.name + ".png");
+  f.ours.renderMs = fullRunMs(file, out, threads, [](const Scene& s) {
+    return std::make_unique<Ours>(s, AccelMethod::Bvh);
+  });
+  f.embree.renderMs = fullRunMs(file, outDir / (f.name + "-embree.png"), threads,
+                                [](const Scene& s) { return std::make_unique<WithEmbree>(s); });
+
+  if (slow) {
+    for (AccelMethod m : {AccelMethod::BoundingBox, AccelMethod::None}) {
+      EngineFigures& e = m == AccelMethod::None ? f.none : f.aabb;
+      const SceneIntersector is(scene, withAccel(m));
+      const std::size_t stride = subsetStride(is, primary);
+      measureOurs(is, primary, shadow, stride, threads, e.rays);
+      e.measured = true;
+      if (m == AccelMethod::None) verify(ours, is, primary, shadow, stride, f);
+      // A render casts about as many rays as primary plus shadow here.
+      const double estimate = primary.rays.size() / (e.rays.primary[1] * 1e6) +
+                              shadow.rays.size() / (e.rays.shadow[1] * 1e6);
+      if (estimate < kSlowRenderLimit)
+        e.renderMs = fullRunMs(file, outDir / (f.name + "-" + toString(m) + ".png"), threads,
+                               [m](const Scene& s) { return std::make_unique<Ours>(s, m); });
+    }
+  }
+  return f;
+}
+
+std::string cell(std::optional<double> v, const char* format = "%.1f") {
+  if (!v) return "–";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, *v);
+  return buf;
+}
+std::string ratio(std::optional<double> a, std::optional<double> b) {
+  if (!a || !b || *b == 0.0) return "–";
+  return cell(*a / *b, "%.2f×");
+}
+
+void printScene(const SceneFigures& f, int threads) {
+  std::printf("\n### %s: %zu triangles, loaded in %.1f ms\n\n", f.name.c_str(), f.triangles,
+              f.loadMs);
+  std::printf("| figure | ours | Embree robust | Embree HQ | ours / robust | ours / HQ | aabb "
+              "(/ robust) | none (/ robust) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  const auto row = [&](const char* label, auto get, const char* format) {
+    const auto v = [&](const EngineFigures& e) { return get(e); };
+    const auto slowCell = [&](const EngineFigures& e) {
+      const auto x = v(e);
+      return x ? cell(x, format) + " (" + ratio(x, v(f.embree)) + ")" : std::string("–");
+    };
+    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", label,
+                cell(v(f.ours), format).c_str(), cell(v(f.embree), format).c_str(),
+                cell(v(f.embreeHq), format).c_str(), ratio(v(f.ours), v(f.embree)).c_str(),
+                ratio(v(f.ours), v(f.embreeHq)).c_str(), slowCell(f.aabb).c_str(),
+                slowCell(f.none).c_str());
+  };
+  using E = EngineFigures;
+  using O = std::optional<double>;
+  row("build ms", [](const E& e) { return e.buildMs; }, "%.1f");
+  row("bytes / triangle", [](const E& e) { return e.bytesPerTriangle; }, "%.1f");
+  const std::string all = std::to_string(threads) + " threads";
+  const auto mr = [](const E& e, double v) { return e.measured ? O(v) : O(); };
+  row("primary Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.primary[0]); }, "%.2f");
+  row(("primary Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.primary[1]); },
+      "%.2f");
+  row("shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.2f");
+  row(("shadow Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.shadow[1]); },
+      "%.2f");
+  row("full run ms (load, build, render, write)", [](const E& e) { return e.renderMs; }, "%.0f");
+  if (f.verifiedRays)
+    std::printf("\nBVH against brute force on %zu of these rays: %zu differ.\n", f.verifiedRays,
+                f.differences);
+}
+
+void printSummary(const std::vector<SceneFigures>& all) {
+  std::printf("\n### Summary: ours / Embree robust (build, memory, time: lower is better; "
+              "Mrays/s: higher is better)\n\n"
+              "| scene | triangles | load ms | build | bytes/tri | primary 1T | primary all | "
+              "shadow 1T | shadow all | full run | primary 1T vs HQ | aabb→bvh primary 1T |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const SceneFigures& f : all) {
+    const auto& o = f.ours;
+    const auto& e = f.embree;
+    std::printf("| %s | %zu | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                f.name.c_str(), f.triangles, f.loadMs, ratio(o.buildMs, e.buildMs).c_str(),
+                ratio(o.bytesPerTriangle, e.bytesPerTriangle).c_str(),
+                ratio(o.rays.primary[0], e.rays.primary[0]).c_str(),
+                ratio(o.rays.primary[1], e.rays.primary[1]).c_str(),
+                ratio(o.rays.shadow[0], e.rays.shadow[0]).c_str(),
+                ratio(o.rays.shadow[1], e.rays.shadow[1]).c_str(),
+                ratio(o.renderMs, e.renderMs).c_str(),
+                ratio(o.rays.primary[0], f.embreeHq.rays.primary[0]).c_str(),
+                f.aabb.measured ? ratio(o.rays.primary[0], f.aabb.rays.primary[0]).c_str() : "–");
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"Benchmark our BVH against Embree 3 (see BENCHMARKS.md)."};
+  std::vector<std::string> scenes;
+  std::string makeScene, makeKnot, outDir = "bench-data/out";
+  std::size_t knotTriangles = 1'000'000;
+  int threads = static_cast<int>(std::thread::hardware_concurrency());
+  bool fast = false, crossover = false;
+  cli.add_option("scenes", scenes, "Scene files to measure");
+  cli.add_option("--threads", threads, "Threads for the 'all threads' figures")->capture_default_str();
+  cli.add_flag("--fast", fast, "Skip the aabb and none measurements");
+  cli.add_option("--out", outDir, "Folder for the rendered images")->capture_default_str();
+  cli.add_option("--make-scene", makeScene, "Write MESH.sce framing MESH.off, and exit");
+  cli.add_option("--make-knot", makeKnot, "Write a generated torus knot OFF, and exit");
+  cli.add_option("--triangles", knotTriangles, "Triangles of --make-knot")->capture_default_str();
+  cli.add_flag("--crossover", crossover, "Measure the mesh size at which a BVH pays, and exit");
+  CLI11_PARSE(cli, argc, argv);
+
+  try {
+    if (!makeKnot.empty()) {
+      writeKnot(makeKnot, knotTriangles);
+      return 0;
+    }
+    if (!makeScene.empty()) {
+      writeMeshScene(makeScene, std::filesystem::path(makeScene).replace_extension(".sce"));
+      return 0;
+    }
+    if (crossover) {
+      printCrossover();
+      return 0;
+    }
+    std::filesystem::create_directories(outDir);
+    std::vector<SceneFigures> all;
+    for (const std::string& s : scenes) {
+      const Scene probe = loadScene(s);
+      if (!EmbreeIntersector::supports(probe)) {
+        std::printf("\n(skipping %s: spheres or cylinders, which the Embree side lacks)\n",
+                    s.c_str());
+        continue;
+      }
+      all.push_back(measure(s, outDir, threads, !fast));
+      printScene(all.back(), threads);
+      std::fflush(stdout);
+    }
+    printSummary(all);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,56 @@
+#pragma once
+// A bounding volume hierarchy over a set of primitive boxes: the layout and
+// its binned SAH build. Used once per large mesh (primitives = triangles) and
+// once per scene (primitives = spheres, cylinders and meshes).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "meshtrace/aabb.h"
+
+namespace meshtrace {
+
+// 32 bytes: a box in float, rounded outward so that it holds its primitives
+// exactly, and either two adjacent children or a range of primitives. The
+// traversal uses the 4-wide form made from it (bvh4.h).
+struct BvhNode {
+  float bounds[6];      // min x y z, max x y z
+  std::uint32_t first;  // interior: index of the left child (right = first + 1);
+                        // leaf: first entry of the leaf's range in Bvh::order
+  std::uint32_t count;  // 0 for an interior node, else primitives in the leaf
+
+  bool isLeaf() const { return count != 0; }
+};
+static_assert(sizeof(BvhNode) == 32);
+
+struct Bvh {
+  std::vector<BvhNode> nodes;        // nodes[0] is the root; empty for no primitives
+  std::vector<std::uint32_t> order;  // primitive indices, grouped by leaf
+  int depth = 0;                     // longest root-to-leaf path (root = 1)
+
+  bool empty() const { return nodes.empty(); }
+  std::size_t bytes() const {
+    return nodes.size() * sizeof(BvhNode) + order.size() * sizeof(std::uint32_t);
+  }
+};
+
+struct BvhBuildOptions {
+  int bins = 16;             // candidate split planes per axis
+  int maxLeafSize = 4;       // larger sets are always split
+  double nodeCost = 1.0;     // SAH: cost of one node visit (two box tests) ...
+  double primitiveCost = 1.0;  // ... relative to one primitive test
+};
+
+// Binned SAH (Wald, "On fast construction of SAH-based bounding volume
+// hierarchies", 2007): at each node, primitives are sorted into bins by
+// centroid along each axis and the cheapest bin boundary by the surface area
+// heuristic is taken; a node becomes a leaf when that is cheaper and it holds
+// at most maxLeafSize primitives. Large nodes are binned and both subtrees
+// built in parallel. The tree shape does not depend on the thread count.
+Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
+
+// The largest depth a built tree can have (traversal stacks are this deep).
+inline constexpr int kMaxBvhDepth = 128;
+
+}  // namespace meshtrace

@@ -1,0 +1,40 @@
+#pragma once
+// A 4-wide BVH: each node holds the float boxes of up to four children in
+// structure-of-arrays form, so one SSE slab test checks all four
+// (bvh4_traverse.h). Made by collapsing a binary Bvh.
+#include <cstdint>
+#include <vector>
+
+#include "meshtrace/bvh.h"
+
+namespace meshtrace {
+
+// 128 bytes. An unused slot has an empty box (lo = +inf, hi = -inf), which
+// no ray meets.
+struct alignas(64) Bvh4Node {
+  float lo[3][4];            // [axis][child]
+  float hi[3][4];
+  std::uint32_t first[4];    // interior child: node index; leaf: start in Bvh4::order
+  std::uint32_t count[4];    // 0 for an interior child, else primitives in the leaf
+};
+static_assert(sizeof(Bvh4Node) == 128);
+
+struct Bvh4 {
+  std::vector<Bvh4Node> nodes;       // nodes[0] is the root, unless the root is a leaf
+  std::vector<std::uint32_t> order;  // primitive indices, grouped by leaf
+  std::uint32_t rootCount = 0;       // primitives when the whole tree is one leaf
+  float rootBounds[6] = {0, 0, 0, 0, 0, 0};
+  int depth = 0;
+
+  bool empty() const { return order.empty(); }
+  std::size_t bytes() const {
+    return nodes.size() * sizeof(Bvh4Node) + order.size() * sizeof(std::uint32_t);
+  }
+};
+
+// Each node takes its binary node's two children, then repeatedly replaces
+// the interior child of largest surface area by its own two children while
+// there is room for four.
+Bvh4 collapseToBvh4(const Bvh& binary);
+
+}  // namespace meshtrace

@@ -1,0 +1,170 @@
+#pragma once
+// Traversal of a Bvh4: one SSE slab test per node checks all four child
+// boxes in float. Closest hit visits children nearest first; any-hit stops
+// at the first blocker. The leaf work is a callback, as in the binary BVH.
+#include <emmintrin.h>
+#include <xmmintrin.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "meshtrace/bvh4.h"
+#include "meshtrace/bvh_ray.h"
+
+namespace meshtrace {
+
+// The ray prepared for float slab tests that stay conservative: every box is
+// tested as if widened by pad.absolute, with the distances scaled by
+// 1 -/+ pad.relative (bvh_ray.h), whatever the float rounding does.
+// - The origin is moved toward the far plane for the near distance (and the
+//   other way for the far one) by the padding plus 2^-22 |o|, four times the
+//   rounding error of converting it to float, so the float origin is still
+//   on the widened side.
+// - The reciprocals are scaled by a further 2^-20, which covers the three
+//   float roundings (subtraction, reciprocal, product; 3 * 2^-24 < 2^-20).
+// - A zero or tiny component gets reciprocal +-1e30 rather than inf, so that
+//   (plane - origin) * reciprocal is never 0 * inf = NaN.
+class BoxRay4 {
+ public:
+  BoxRay4(const Ray& ray, const SlabPadding& pad) {
+    for (int a = 0; a < 3; ++a) {
+      const double d = ray.direction[a];
+      const double inv = std::abs(d) < 1e-30 ? std::copysign(1e30, d) : 1.0 / d;
+      const bool negative = std::signbit(d);
+      const double shift =
+          (pad.absolute + 0x1p-22 * std::abs(ray.origin[a])) * (negative ? -1.0 : 1.0);
+      negative_[a] = negative;
+      originNear_[a] = _mm_set1_ps(static_cast<float>(ray.origin[a] + shift));
+      originFar_[a] = _mm_set1_ps(static_cast<float>(ray.origin[a] - shift));
+      invNear_[a] = _mm_set1_ps(static_cast<float>(inv * (1.0 - pad.relative - 0x1p-20)));
+      invFar_[a] = _mm_set1_ps(static_cast<float>(inv * (1.0 + pad.relative + 0x1p-20)));
+    }
+  }
+
+  // Bit i set if the ray meets child i's widened box within [tMin, tMax];
+  // tEnter holds the entry distances.
+  int intersect(const Bvh4Node& node, __m128 tMin, __m128 tMax, __m128& tEnter) const {
+    __m128 enter = tMin, exit = tMax;
+    for (int a = 0; a < 3; ++a) {
+      const __m128 lo = _mm_load_ps(node.lo[a]), hi = _mm_load_ps(node.hi[a]);
+      const __m128 nearPlane = negative_[a] ? hi : lo, farPlane = negative_[a] ? lo : hi;
+      enter = _mm_max_ps(enter, _mm_mul_ps(_mm_sub_ps(nearPlane, originNear_[a]), invNear_[a]));
+      exit = _mm_min_ps(exit, _mm_mul_ps(_mm_sub_ps(farPlane, originFar_[a]), invFar_[a]));
+    }
+    tEnter = enter;
+    return _mm_movemask_ps(_mm_cmple_ps(enter, exit));
+  }
+
+ private:
+  __m128 originNear_[3], originFar_[3], invNear_[3], invFar_[3];
+  bool negative_[3];
+};
+
+namespace bvh4 {
+
+// A float no smaller than t (t * (1 + 2^-23) is above t by at least half a
+// float ulp, so rounding to nearest cannot fall below t); inf stays inf.
+inline float atLeast(double t) { return static_cast<float>(t * (1.0 + 0x1p-23)); }
+inline float atMost(double t) { return t <= 0.0 ? static_cast<float>(t * (1.0 + 0x1p-23))
+                                                : static_cast<float>(t * (1.0 - 0x1p-23)); }
+
+struct Entry {
+  std::uint32_t first, count;  // a node (count 0) or a leaf's primitive range
+  float tEnter;
+};
+// Each level pushes at most three entries besides the one it continues with.
+inline constexpr int kStackSize = 3 * kMaxBvhDepth + 1;
+
+// Sorts the children in `mask` by entry distance, pushes all but the
+// nearest (farthest first) and returns the nearest.
+inline Entry pushAllButNearest(const Bvh4Node& node, int mask, __m128 tEnter, Entry* stack,
+                               int& top) {
+  alignas(16) float t[4];
+  _mm_store_ps(t, tEnter);
+  Entry hits[4];
+  int n = 0;
+  for (; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(static_cast<unsigned>(mask));
+    const Entry e{node.first[i], node.count[i], t[i]};
+    int j = n++;
+    for (; j > 0 && hits[j - 1].tEnter < e.tEnter; --j) hits[j] = hits[j - 1];
+    hits[j] = e;
+  }
+  for (int i = 0; i < n - 1; ++i) stack[top++] = hits[i];
+  return hits[n - 1];
+}
+
+}  // namespace bvh4
+
+// Calls leaf(first, count) for the leaves whose boxes the ray meets at
+// tMin <= t <= tBest, nearer boxes first. The leaf may lower tBest (it is
+// read again after every call); a box entered exactly at tBest is still
+// visited, so that a later primitive at the same distance can win a tie.
+template <typename Leaf>
+void traverseClosest(const Bvh4& bvh, const BoxRay4& ray, double tMin, const double& tBest,
+                     std::uint64_t& visits, Leaf&& leaf) {
+  if (bvh.empty()) return;
+  if (bvh.nodes.empty()) return leaf(0, bvh.rootCount);
+  bvh4::Entry stack[bvh4::kStackSize];
+  int top = 0;
+  const __m128 tMinV = _mm_set1_ps(bvh4::atMost(tMin));
+  float tMax = bvh4::atLeast(tBest);  // refreshed after every leaf
+  bvh4::Entry next{0, 0, 0.0f};       // the root
+  for (;;) {
+    if (next.count == 0) {
+      // An interior node: continue with its nearest child hit, if any.
+      const Bvh4Node& node = bvh.nodes[next.first];
+      ++visits;
+      __m128 tEnter;
+      const int mask = ray.intersect(node, tMinV, _mm_set1_ps(tMax), tEnter);
+      if (mask) {
+        if ((mask & (mask - 1)) == 0) {
+          const int i = __builtin_ctz(static_cast<unsigned>(mask));
+          next = {node.first[i], node.count[i], 0.0f};
+        } else {
+          next = bvh4::pushAllButNearest(node, mask, tEnter, stack, top);
+        }
+        continue;
+      }
+    } else {
+      leaf(next.first, next.count);
+      tMax = bvh4::atLeast(tBest);
+    }
+    // Resume with the nearest postponed child that may still hold a hit.
+    do {
+      if (top == 0) return;
+      next = stack[--top];
+    } while (next.tEnter > tMax);
+  }
+}
+
+// Calls blocked(first, count) for the leaves whose boxes the ray meets at
+// tMin <= t <= tMax until one returns true; returns whether one did.
+template <typename Leaf>
+bool traverseAny(const Bvh4& bvh, const BoxRay4& ray, double tMin, double tMax,
+                 std::uint64_t& visits, Leaf&& blocked) {
+  if (bvh.empty()) return false;
+  if (bvh.nodes.empty()) return blocked(0, bvh.rootCount);
+  std::uint32_t stack[bvh4::kStackSize];
+  int top = 0;
+  stack[top++] = 0;
+  const __m128 tMinV = _mm_set1_ps(bvh4::atMost(tMin));
+  const __m128 tMaxV = _mm_set1_ps(bvh4::atLeast(tMax));
+  while (top > 0) {
+    const Bvh4Node& node = bvh.nodes[stack[--top]];
+    ++visits;
+    __m128 tEnter;
+    int mask = ray.intersect(node, tMinV, tMaxV, tEnter);
+    for (; mask; mask &= mask - 1) {
+      const int i = __builtin_ctz(static_cast<unsigned>(mask));
+      if (node.count[i] == 0)
+        stack[top++] = node.first[i];
+      else if (blocked(node.first[i], node.count[i]))
+        return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace meshtrace

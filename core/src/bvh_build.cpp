@@ -1,0 +1,333 @@
+// Binned SAH build (see bvh.h). Primitives are handled as 32-byte float
+// references (box rounded outward, index in the spare lane) that are
+// partitioned in place, so every pass reads memory in order; SSE does the box
+// arithmetic. Float boxes are conservative: rounded outward, they still hold
+// every primitive exactly.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
+#include <xmmintrin.h>
+#include <emmintrin.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include "meshtrace/bvh.h"
+
+namespace meshtrace {
+
+namespace {
+
+constexpr int kMaxBins = 32;
+// Below these sizes a node's work is too small to be worth a task.
+constexpr std::uint32_t kParallelScan = 32768;
+constexpr std::uint32_t kParallelSubtrees = 4096;
+// Past this depth nodes are split at the centroid median, which bounds the
+// depth by this plus log2(n) <= kMaxBvhDepth.
+constexpr int kMedianDepth = 64;
+
+float roundDown(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+float roundUp(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// Lanes x, y, z. The w lane of a primitive's box holds its index, whose bit
+// pattern is a denormal float: it is masked off before any arithmetic, which
+// would otherwise run into the (very slow) denormal assists.
+inline __m128 xyz(__m128 v) { return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0))); }
+
+// A float box in SSE lanes x, y, z (w: see xyz).
+struct Box4 {
+  __m128 lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
+  __m128 hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+
+  void extend(__m128 l, __m128 h) {
+    lo = _mm_min_ps(lo, l);
+    hi = _mm_max_ps(hi, h);
+  }
+  void extend(const Box4& b) { extend(b.lo, b.hi); }
+  // Half the surface area; SAH costs only compare ratios.
+  float halfArea() const {
+    alignas(16) float e[4];
+    _mm_store_ps(e, _mm_max_ps(_mm_sub_ps(xyz(hi), xyz(lo)), _mm_setzero_ps()));
+    return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+  }
+};
+
+// A primitive: its box, with the primitive index in the w lane of `lo`
+// (and 0 in that of `hi`).
+struct PrimRef {
+  __m128 lo, hi;
+  __m128 centroid2() const { return _mm_add_ps(xyz(lo), hi); }  // twice the centroid
+  std::uint32_t index() const {
+    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_castps_si128(_mm_shuffle_ps(lo, lo, 3))));
+  }
+};
+
+// Bounds of a range: of the boxes, and of the (doubled) centroids.
+struct RangeBounds {
+  Box4 box, centroids;
+  void add(const PrimRef& p) {
+    box.extend(p.lo, p.hi);
+    const __m128 c = p.centroid2();
+    centroids.extend(c, c);
+  }
+  void add(const RangeBounds& o) {
+    box.extend(o.box);
+    centroids.extend(o.centroids);
+  }
+};
+
+// Maps doubled centroids to bin indices per axis. An axis whose centroids
+// (nearly) coincide gets scale 0: everything in bin 0, no split offered.
+struct Binner {
+  __m128 origin, scale, last;
+  bool usable[3];
+
+  Binner(const Box4& centroids, int bins) {
+    alignas(16) float lo[4], hi[4], s[4] = {0, 0, 0, 0};
+    _mm_store_ps(lo, centroids.lo);
+    _mm_store_ps(hi, centroids.hi);
+    for (int a = 0; a < 3; ++a) {
+      const float v = static_cast<float>(bins) / (hi[a] - lo[a]);
+      usable[a] = v > 0.0f && std::isfinite(v);
+      s[a] = usable[a] ? v : 0.0f;
+    }
+    origin = centroids.lo;
+    scale = _mm_load_ps(s);
+    last = _mm_set1_ps(static_cast<float>(bins - 1));
+  }
+  // Bin per axis, in lanes x, y, z.
+  __m128i bins(const PrimRef& p) const {
+    const __m128 b = _mm_mul_ps(_mm_sub_ps(p.centroid2(), origin), scale);
+    return _mm_cvttps_epi32(_mm_max_ps(_mm_min_ps(b, last), _mm_setzero_ps()));
+  }
+  int bin(const PrimRef& p, int axis) const {
+    alignas(16) std::int32_t b[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(b), bins(p));
+    return b[axis];
+  }
+};
+
+struct Bins {
+  Box4 box[3][kMaxBins];
+  std::uint32_t count[3][kMaxBins] = {};
+  void add(const Bins& o) {
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < kMaxBins; ++i) {
+        box[a][i].extend(o.box[a][i]);
+        count[a][i] += o.count[a][i];
+      }
+  }
+};
+
+// Runs `scan(begin, end, partial)` over [begin, end), in parallel for large
+// ranges, and merges the partial results with T::add.
+template <typename T, typename Scan>
+T reduceRange(std::uint32_t begin, std::uint32_t end, const Scan& scan) {
+  if (end - begin < kParallelScan) {
+    T out;
+    scan(begin, end, out);
+    return out;
+  }
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::uint32_t>(begin, end, kParallelScan / 4), T(),
+      [&](const tbb::blocked_range<std::uint32_t>& r, T acc) {
+        scan(r.begin(), r.end(), acc);
+        return acc;
+      },
+      [](T a, const T& b) {
+        a.add(b);
+        return a;
+      });
+}
+
+struct Split {
+  int axis = -1;
+  int bin = 0;        // primitives in bins <= bin go left
+  float cost = 0.0f;  // sum of area times count over both sides
+};
+
+class Builder {
+ public:
+  Builder(std::span<const Aabb> boxes, const BvhBuildOptions& options, Bvh& out)
+      : options_(options), out_(out), bins_(std::clamp(options.bins, 2, kMaxBins)),
+        refs_(new PrimRef[boxes.size()]), nodes_(new BvhNode[2 * boxes.size()]) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                          const Aabb& b = boxes[i];
+                          float index;
+                          const auto id = static_cast<std::uint32_t>(i);
+                          std::memcpy(&index, &id, sizeof index);
+                          refs_[i].lo = _mm_setr_ps(roundDown(b.min.x), roundDown(b.min.y),
+                                                    roundDown(b.min.z), index);
+                          refs_[i].hi = _mm_setr_ps(roundUp(b.max.x), roundUp(b.max.y),
+                                                    roundUp(b.max.z), 0.0f);
+                        }
+                      });
+  }
+
+  void run(std::uint32_t n) {
+    const RangeBounds root = reduceRange<RangeBounds>(
+        0, n, [&](std::uint32_t b, std::uint32_t e, RangeBounds& acc) {
+          for (std::uint32_t i = b; i < e; ++i) acc.add(refs_[i]);
+        });
+    build(0, 0, n, root, 1);
+    const std::uint32_t count = nodeCount_.load();
+    out_.nodes.assign(nodes_.get(), nodes_.get() + count);
+    out_.order.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) out_.order[i] = refs_[i].index();
+    out_.depth = depth_.load();
+  }
+
+ private:
+  // The cheapest bin boundary over the three axes, or axis -1 if none.
+  Split findSplit(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
+    const Bins bins =
+        reduceRange<Bins>(begin, end, [&](std::uint32_t b, std::uint32_t e, Bins& acc) {
+          alignas(16) std::int32_t k[4];
+          for (std::uint32_t i = b; i < e; ++i) {
+            const PrimRef& p = refs_[i];
+            _mm_store_si128(reinterpret_cast<__m128i*>(k), binner.bins(p));
+            for (int a = 0; a < 3; ++a) {
+              acc.box[a][k[a]].extend(p.lo, p.hi);
+              ++acc.count[a][k[a]];
+            }
+          }
+        });
+    Split best;
+    for (int a = 0; a < 3; ++a) {
+      if (!binner.usable[a]) continue;
+      // Right-to-left sweep of areas times counts, then left to right.
+      float rightCost[kMaxBins];
+      Box4 right;
+      std::uint32_t rightCount = 0;
+      for (int i = bins_ - 1; i > 0; --i) {
+        right.extend(bins.box[a][i]);
+        rightCount += bins.count[a][i];
+        rightCost[i - 1] = right.halfArea() * rightCount;
+      }
+      Box4 left;
+      std::uint32_t leftCount = 0;
+      for (int i = 0; i < bins_ - 1; ++i) {
+        left.extend(bins.box[a][i]);
+        leftCount += bins.count[a][i];
+        if (leftCount == 0 || leftCount == end - begin) continue;
+        const float cost = left.halfArea() * leftCount + rightCost[i];
+        if (best.axis < 0 || cost < best.cost) best = {a, i, cost};
+      }
+    }
+    return best;
+  }
+
+  // Moves the primitives in bins <= split.bin to the front; returns the
+  // boundary and the bounds of both sides.
+  std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Binner& binner,
+                          const Split& split, RangeBounds& left, RangeBounds& right) {
+    std::uint32_t i = begin, j = end;
+    const auto goesLeft = [&](const PrimRef& p) { return binner.bin(p, split.axis) <= split.bin; };
+    for (;;) {
+      while (i < j && goesLeft(refs_[i])) left.add(refs_[i++]);
+      while (i < j && !goesLeft(refs_[j - 1])) right.add(refs_[--j]);
+      if (i >= j) return i;
+      std::swap(refs_[i], refs_[j - 1]);
+    }
+  }
+
+  // Splits at the centroid median of the widest axis (coincident
+  // centroids, or too deep for SAH).
+  std::uint32_t medianSplit(std::uint32_t begin, std::uint32_t end, const Box4& centroids,
+                            RangeBounds& left, RangeBounds& right) {
+    alignas(16) float e[4];
+    _mm_store_ps(e, _mm_sub_ps(centroids.hi, centroids.lo));
+    const int axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(refs_.get() + begin, refs_.get() + mid, refs_.get() + end,
+                     [&](const PrimRef& p, const PrimRef& q) {
+                       alignas(16) float cp[4], cq[4];
+                       _mm_store_ps(cp, p.centroid2());
+                       _mm_store_ps(cq, q.centroid2());
+                       return cp[axis] < cq[axis];
+                     });
+    for (std::uint32_t i = begin; i < mid; ++i) left.add(refs_[i]);
+    for (std::uint32_t i = mid; i < end; ++i) right.add(refs_[i]);
+    return mid;
+  }
+
+  void makeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t end, int depth) {
+    node.first = begin;
+    node.count = end - begin;
+    int seen = depth_.load(std::memory_order_relaxed);
+    while (seen < depth && !depth_.compare_exchange_weak(seen, depth)) {
+    }
+  }
+
+  void build(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
+             const RangeBounds& bounds, int depth) {
+    BvhNode& node = nodes_[index];
+    alignas(16) float lo[4], hi[4];
+    _mm_store_ps(lo, bounds.box.lo);
+    _mm_store_ps(hi, bounds.box.hi);
+    std::copy(lo, lo + 3, node.bounds);
+    std::copy(hi, hi + 3, node.bounds + 3);
+    const std::uint32_t n = end - begin;
+    const bool small = n <= static_cast<std::uint32_t>(options_.maxLeafSize);
+    if (n == 1) return makeLeaf(node, begin, end, depth);
+
+    RangeBounds left, right;
+    std::uint32_t mid;
+    const Binner binner(bounds.centroids, bins_);
+    const Split split = depth < kMedianDepth ? findSplit(begin, end, binner) : Split{};
+    if (split.axis >= 0) {
+      const double area = bounds.box.halfArea();
+      const double leafCost = options_.primitiveCost * n * area;
+      const double splitCost = options_.nodeCost * area + options_.primitiveCost * split.cost;
+      if (small && leafCost <= splitCost) return makeLeaf(node, begin, end, depth);
+      mid = partition(begin, end, binner, split, left, right);
+    } else {
+      if (small) return makeLeaf(node, begin, end, depth);
+      mid = medianSplit(begin, end, bounds.centroids, left, right);
+    }
+    const std::uint32_t child = nodeCount_.fetch_add(2);
+    node.first = child;
+    node.count = 0;
+    const auto buildLeft = [&] { build(child, begin, mid, left, depth + 1); };
+    const auto buildRight = [&] { build(child + 1, mid, end, right, depth + 1); };
+    if (n >= kParallelSubtrees) {
+      tbb::parallel_invoke(buildLeft, buildRight);
+    } else {
+      buildLeft();
+      buildRight();
+    }
+  }
+
+  const BvhBuildOptions& options_;
+  Bvh& out_;
+  int bins_;
+  std::unique_ptr<PrimRef[]> refs_;
+  std::unique_ptr<BvhNode[]> nodes_;  // room for the most nodes a tree can have
+  std::atomic<std::uint32_t> nodeCount_{1};
+  std::atomic<int> depth_{0};
+};
+
+}  // namespace
+
+Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options) {
+  Bvh bvh;
+  if (boxes.empty()) return bvh;
+  Builder(boxes, options, bvh).run(static_cast<std::uint32_t>(boxes.size()));
+  return bvh;
+}
+
+}  // namespace meshtrace

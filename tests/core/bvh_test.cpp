@@ -1,0 +1,397 @@
+// The BVH against brute force, ray by ray: over a million random rays on
+// generated meshes and object scenes (origins inside, outside and exactly on
+// the bounding box; axis-parallel directions included), the BVH must report
+// the same primitive, t and barycentrics as --accel none, and its any-hit
+// query must agree with the closest hit.
+#include <gtest/gtest.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/task_arena.h>
+
+#include <cstdio>
+#include <random>
+#include <sstream>
+
+#include "meshtrace/bvh.h"
+#include "meshtrace/bvh4.h"
+#include "meshtrace/intersector.h"
+#include "meshtrace/mesh_generators.h"
+
+namespace meshtrace {
+namespace {
+
+Mesh makeMesh(const char* name, MeshData data) {
+  return Mesh(name, std::move(data), Shading::Flat, Material{});
+}
+
+// Rotates every vertex so that no face stays axis-aligned.
+MeshData rotated(MeshData m, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Vec3& v : m.vertices) {
+    v = {c * v.x - s * v.z, v.y, s * v.x + c * v.z};
+    v = {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+  }
+  return m;
+}
+
+// Random triangles, a few of them repeated exactly (equal-t ties between
+// different indices) and a few sharing a vertex with the previous one.
+MeshData triangleSoup(int n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0), small(-0.2, 0.2);
+  MeshData m;
+  for (int i = 0; i < n; ++i) {
+    const auto next = static_cast<std::uint32_t>(m.vertices.size());
+    if (i % 10 == 9) {  // a duplicate of the previous triangle
+      m.triangles.push_back(m.triangles.back());
+      continue;
+    }
+    const Vec3 c(u(rng), u(rng), u(rng));
+    for (int k = 0; k < 3; ++k) m.vertices.push_back(c + Vec3(small(rng), small(rng), small(rng)));
+    m.triangles.push_back({next, next + 1, next + 2});
+  }
+  return m;
+}
+
+Scene meshScene(std::vector<Mesh> meshes) {
+  Scene scene;
+  scene.meshes = std::move(meshes);
+  return scene;
+}
+
+// Spheres (two of them identical: a tie), cylinders, planes and meshes,
+// one of them (8 triangles) too small for a BVH.
+Scene objectScene(std::mt19937_64& rng) {
+  Scene scene;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 150; ++i)
+    scene.spheres.push_back({Vec3(u(rng), u(rng), u(rng)), 0.02 + 0.1 * std::abs(u(rng)), {}});
+  scene.spheres.push_back(scene.spheres[7]);
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 axis = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+    scene.cylinders.push_back({Vec3(u(rng), u(rng), u(rng)), 0.05, axis, 0.3, {}});
+  }
+  scene.planes.push_back({Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), {}});
+  scene.planes.push_back({Vec3(0.0, 0.0, -1.2), glm::normalize(Vec3(0.1, 0.2, 1.0)), {}});
+  scene.meshes.push_back(makeMesh("ball", makeIcosphere(Vec3(0.3, 0.2, 0.1), 0.4, 2)));
+  scene.meshes.push_back(makeMesh("cube", makeGriddedBox(Vec3(-0.5), Vec3(-0.2), 1)));
+  scene.meshes.push_back(makeMesh("floor", makeGrid(Vec3(0.0, -0.5, 0.0), 1.5, 6)));
+  scene.meshes.push_back(makeMesh("square", makeGrid(Vec3(0.5, 0.6, -0.3), 0.4, 2)));
+  return scene;
+}
+
+Aabb sceneBox(const Scene& scene) {
+  Aabb box;
+  for (const Mesh& m : scene.meshes) box.extend(m.bounds());
+  for (const Sphere& s : scene.spheres) {
+    box.extend(s.center - Vec3(s.radius));
+    box.extend(s.center + Vec3(s.radius));
+  }
+  return box;
+}
+
+// A target point on the scene's geometry, so that most rays hit something.
+Vec3 randomTarget(const Scene& scene, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  if (!scene.spheres.empty() && u(rng) < 0.5) {
+    const Sphere& s = scene.spheres[rng() % scene.spheres.size()];
+    const Vec3 d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    return s.center + s.radius * d;
+  }
+  const Mesh& m = scene.meshes[rng() % scene.meshes.size()];
+  const TriangleIndices& t = m.triangles()[rng() % m.triangles().size()];
+  double b = u(rng), g = u(rng);
+  if (b + g > 1.0) b = 1.0 - b, g = 1.0 - g;
+  // Exactly on a vertex or an edge now and then.
+  if (u(rng) < 0.05) b = 0.0;
+  if (u(rng) < 0.05) g = 0.0;
+  const auto& v = m.vertices();
+  return (1.0 - b - g) * v[t[0]] + b * v[t[1]] + g * v[t[2]];
+}
+
+Ray randomRay(const Scene& scene, const Aabb& box, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Vec3 lo = box.min, hi = box.max, e = box.extent();
+  Vec3 o;
+  const double kind = u(rng);
+  if (kind < 0.35) {  // inside the box
+    o = lo + Vec3(u(rng), u(rng), u(rng)) * e;
+  } else if (kind < 0.7) {  // outside it, up to one box size away
+    o = lo - e + 3.0 * Vec3(u(rng), u(rng), u(rng)) * e;
+  } else {  // exactly on one of its faces
+    o = lo + Vec3(u(rng), u(rng), u(rng)) * e;
+    const int axis = static_cast<int>(rng() % 3);
+    o[axis] = rng() % 2 ? lo[axis] : hi[axis];
+  }
+  Vec3 d;
+  const double dir = u(rng);
+  if (dir < 0.25) {  // axis-parallel
+    d = Vec3(0.0);
+    d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+  } else if (dir < 0.4) {  // along a box face (one component zero)
+    d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    d[rng() % 3] = 0.0;
+    d = glm::normalize(d);
+  } else if (dir < 0.55) {  // uniformly random
+    d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+  } else {  // toward the geometry
+    d = randomTarget(scene, rng) - o;
+    if (d == Vec3(0.0)) d = Vec3(0.0, 0.0, 1.0);
+    d = glm::normalize(d);
+  }
+  return {o, d};
+}
+
+std::string describe(const Ray& ray, const Hit& h) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+    << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << "): ";
+  if (!h.found()) return s.str() + "miss";
+  s << toString(h.ref.kind) << " " << h.ref.object << " triangle " << h.ref.triangle
+    << " t=" << h.t;
+  return s.str();
+}
+
+struct Disagreements {
+  std::uint64_t rays = 0, hits = 0, closest = 0, anyHit = 0;
+  std::string example;
+  void add(const Disagreements& o) {
+    rays += o.rays;
+    hits += o.hits;
+    closest += o.closest;
+    anyHit += o.anyHit;
+    if (example.empty()) example = o.example;
+  }
+};
+
+// Casts `count` random rays through the BVH and brute force and counts where
+// they disagree: in the closest hit, in any-hit against brute force, and in
+// any-hit against the closest hit.
+Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
+                      TriangleKernel kernel = {}) {
+  const SceneIntersector bvh(scene, {AccelMethod::Bvh, kernel});
+  const SceneIntersector brute(scene, {AccelMethod::None, kernel});
+  const Aabb box = sceneBox(scene);
+  const bool exactLimit = kernel.test != TriangleTest::Watertight;
+  constexpr std::uint64_t kChunk = 4096;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::uint64_t>(0, (count + kChunk - 1) / kChunk), Disagreements(),
+      [&](const tbb::blocked_range<std::uint64_t>& r, Disagreements acc) {
+        Counters c;
+        for (std::uint64_t chunk = r.begin(); chunk < r.end(); ++chunk) {
+          std::mt19937_64 rng(seed * 1000003 + chunk);
+          for (std::uint64_t i = 0; i < kChunk && chunk * kChunk + i < count; ++i) {
+            const Ray ray = randomRay(scene, box, rng);
+            Hit a, b;
+            const bool fa = bvh.closestHit(ray, 0.0, a, c);
+            const bool fb = brute.closestHit(ray, 0.0, b, c);
+            ++acc.rays;
+            acc.hits += fb;
+            const bool same = fa == fb && (!fa || (a.t == b.t && a.ref.kind == b.ref.kind &&
+                                                   a.ref.object == b.ref.object &&
+                                                   a.ref.triangle == b.ref.triangle &&
+                                                   a.beta == b.beta && a.gamma == b.gamma));
+            if (!same) {
+              ++acc.closest;
+              if (acc.example.empty())
+                acc.example = "bvh " + describe(ray, a) + " | brute force " + describe(ray, b);
+            }
+            // One limit per ray: beyond the closest hit, exactly at it, or before it.
+            const double scale[] = {1.25, 1.0, 0.8};
+            const double tMax = (fb ? b.t : 2.0) * scale[rng() % 3];
+            {
+              const bool oa = bvh.occluded(ray, 0.0, tMax, c);
+              const bool ob = brute.occluded(ray, 0.0, tMax, c);
+              // With an exact t < tMax cut-off, any-hit is the closest hit's t
+              // compared with the limit.
+              const bool consistent = !exactLimit || oa == (fb && b.t < tMax);
+              if (oa != ob || !consistent) {
+                ++acc.anyHit;
+                if (acc.example.empty())
+                  acc.example = "any-hit to " + std::to_string(tMax) + ": bvh " +
+                                std::to_string(oa) + ", brute force " + std::to_string(ob) +
+                                ", closest " + describe(ray, b);
+              }
+            }
+          }
+        }
+        return acc;
+      },
+      [](Disagreements a, const Disagreements& b) {
+        a.add(b);
+        return a;
+      });
+}
+
+void expectAgreement(const char* label, const Disagreements& d) {
+  std::printf("[ figures  ] %-12s %llu rays, %llu hits; closest-hit differences %llu, any-hit %llu\n",
+              label, static_cast<unsigned long long>(d.rays),
+              static_cast<unsigned long long>(d.hits), static_cast<unsigned long long>(d.closest),
+              static_cast<unsigned long long>(d.anyHit));
+  EXPECT_GT(d.hits, d.rays / 5) << label << ": too few rays hit to mean much";
+  EXPECT_EQ(d.closest, 0u) << label << ": " << d.example;
+  EXPECT_EQ(d.anyHit, 0u) << label << ": " << d.example;
+}
+
+// Over a million rays in all, on meshes of a few hundred triangles (brute
+// force has to keep up).
+TEST(BvhAgreesWithBruteForce, GeneratedMeshes) {
+  std::mt19937_64 rng(42);
+  const Scene knot = meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
+  const Scene ball =
+      meshScene({makeMesh("ball", rotated(makeIcosphere(Vec3(0.1, 0.2, 0.3), 1.0, 2), 0.3))});
+  const Scene boxes = meshScene({makeMesh("box", makeGriddedBox(Vec3(-1.0), Vec3(1.0), 4)),
+                                 makeMesh("grid", makeGrid(Vec3(0.0, 0.25, 0.0), 1.5, 8))});
+  const Scene soup = meshScene({makeMesh("soup", triangleSoup(400, rng))});
+  expectAgreement("torus knot", compare(knot, 300000, 1));
+  expectAgreement("icosphere", compare(ball, 250000, 2));
+  expectAgreement("gridded box", compare(boxes, 250000, 3));
+  expectAgreement("soup", compare(soup, 250000, 4));
+}
+
+TEST(BvhAgreesWithBruteForce, ObjectsOfEveryKind) {
+  std::mt19937_64 rng(7);
+  expectAgreement("objects", compare(objectScene(rng), 200000, 5));
+}
+
+// Whatever triangle kernel TraceOptions selects, the BVH calls that one.
+TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
+  std::mt19937_64 rng(9);
+  const Scene scene = meshScene({makeMesh("soup", triangleSoup(300, rng)),
+                                 makeMesh("box", makeGriddedBox(Vec3(-0.3), Vec3(0.4), 3))});
+  for (TriangleTest test :
+       {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight})
+    for (Precision precision : {Precision::Double, Precision::Single}) {
+      const std::string label = std::string(toString(test)) + "/" + toString(precision);
+      expectAgreement(label.c_str(), compare(scene, 40000, 6, {test, precision}));
+    }
+}
+
+// Structure: every primitive in exactly one leaf, every box inside its
+// parent's, every primitive inside its leaf's box.
+TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
+  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12);
+  std::vector<Aabb> boxes;
+  for (const auto& t : knot.triangles) {
+    Aabb b;
+    for (auto k : t) b.extend(knot.vertices[k]);
+    boxes.push_back(b);
+  }
+  const Bvh bvh = buildBvh(boxes);
+  ASSERT_FALSE(bvh.empty());
+  EXPECT_LE(bvh.depth, kMaxBvhDepth);
+  const auto inside = [](const Aabb& b, const float* n) {
+    return n[0] <= b.min.x && n[1] <= b.min.y && n[2] <= b.min.z && n[3] >= b.max.x &&
+           n[4] >= b.max.y && n[5] >= b.max.z;
+  };
+  std::vector<int> seen(boxes.size(), 0);
+  for (const BvhNode& node : bvh.nodes) {
+    if (node.isLeaf()) {
+      EXPECT_LE(node.count, 4u);
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+        ++seen[bvh.order[k]];
+        EXPECT_TRUE(inside(boxes[bvh.order[k]], node.bounds));
+      }
+      continue;
+    }
+    for (std::uint32_t c : {node.first, node.first + 1}) {
+      const float* b = bvh.nodes[c].bounds;
+      const Aabb child{Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])};
+      EXPECT_TRUE(inside(child, node.bounds));
+    }
+  }
+  for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+// Collapsing keeps every leaf, and every child box holds its node's boxes.
+TEST(BvhBuild, FourWideTreeKeepsEveryLeafInsideItsBox) {
+  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
+  std::vector<Aabb> boxes;
+  for (const auto& t : knot.triangles) {
+    Aabb b;
+    for (auto k : t) b.extend(knot.vertices[k]);
+    boxes.push_back(b);
+  }
+  const Bvh4 bvh = collapseToBvh4(buildBvh(boxes));
+  ASSERT_FALSE(bvh.nodes.empty());
+  std::vector<int> seen(boxes.size(), 0);
+  // Walk from the root, checking each child against the box it came with.
+  struct Item {
+    std::uint32_t node;
+    Aabb box;
+  };
+  std::vector<Item> todo{{0, Aabb{Vec3(-kInfinity), Vec3(kInfinity)}}};
+  std::size_t visited = 0;
+  while (!todo.empty()) {
+    const Item item = todo.back();
+    todo.pop_back();
+    ++visited;
+    const Bvh4Node& node = bvh.nodes[item.node];
+    for (int i = 0; i < 4; ++i) {
+      const Aabb child{Vec3(node.lo[0][i], node.lo[1][i], node.lo[2][i]),
+                       Vec3(node.hi[0][i], node.hi[1][i], node.hi[2][i])};
+      if (child.empty()) continue;  // an unused slot
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(item.box.min, child.min)) &&
+                  glm::all(glm::lessThanEqual(child.max, item.box.max)));
+      if (node.count[i] == 0) {
+        todo.push_back({node.first[i], child});
+        continue;
+      }
+      for (std::uint32_t k = node.first[i]; k < node.first[i] + node.count[i]; ++k) {
+        ++seen[bvh.order[k]];
+        const Aabb& b = boxes[bvh.order[k]];
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(child.min, b.min)) &&
+                    glm::all(glm::lessThanEqual(b.max, child.max)));
+      }
+    }
+  }
+  EXPECT_EQ(visited, bvh.nodes.size());
+  for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+// The build is parallel, but the tree does not depend on the thread count.
+TEST(BvhBuild, SameTreeOnOneThreadAsOnAll) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 6);  // 82k triangles
+  std::vector<Aabb> boxes;
+  for (const auto& t : ball.triangles) {
+    Aabb b;
+    for (auto k : t) b.extend(ball.vertices[k]);
+    boxes.push_back(b);
+  }
+  const Bvh all = buildBvh(boxes);
+  Bvh one;
+  tbb::task_arena(1).execute([&] { one = buildBvh(boxes); });
+  EXPECT_EQ(all.nodes.size(), one.nodes.size());
+  EXPECT_EQ(all.depth, one.depth);
+  EXPECT_TRUE(all.order == one.order);
+}
+
+TEST(BvhBuild, CoincidentBoxesStillGiveSmallLeaves) {
+  const std::vector<Aabb> boxes(1000, Aabb{Vec3(1.0), Vec3(2.0)});
+  const Bvh bvh = buildBvh(boxes);
+  for (const BvhNode& node : bvh.nodes)
+    if (node.isLeaf()) EXPECT_LE(node.count, 4u);
+  EXPECT_LE(bvh.depth, 12);
+}
+
+TEST(SceneBvh, SmallMeshesGetNoBvhAndAreSaidToBeLeftOut) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 2)));  // 8 triangles
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(3.0), 1.0, 2)));
+  const SceneBvh bvh(scene);
+  EXPECT_TRUE(bvh.meshBvh(0).empty());
+  EXPECT_FALSE(bvh.meshBvh(1).empty());
+  ASSERT_EQ(bvh.stats().leftOut.size(), 1u);
+  EXPECT_NE(bvh.stats().leftOut[0].find("square.off"), std::string::npos);
+}
+
+TEST(Accel, BvhIsTheDefaultAndParses) {
+  EXPECT_EQ(TraceOptions{}.accel, AccelMethod::Bvh);
+  EXPECT_EQ(parseAccelMethod("bvh"), AccelMethod::Bvh);
+  EXPECT_STREQ(toString(AccelMethod::Bvh), "bvh");
+  EXPECT_THROW(parseAccelMethod("kd"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace meshtrace
