@@ -11,7 +11,7 @@ seconds="${FUZZ_SECONDS:-30}"
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(scene_parser off_reader)
 
-command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found (apt-get install clang libclang-rt-14-dev)" >&2; exit 1; }
+scripts/install-packages.sh clang libclang-rt-14-dev
 CC=clang CXX=clang++ cmake -S fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build build-fuzz -j "$(nproc)"
 

@@ -2,15 +2,6 @@
 
 namespace meshtrace {
 
-namespace {
-// gamma(n) = n*u / (1 - n*u), the bound on relative rounding error after n
-// floating-point operations (pbrt, section 6.8.1).
-constexpr double gamma(int n) {
-  constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
-  return (n * u) / (1 - n * u);
-}
-}  // namespace
-
 bool intersectSlabs(const Aabb& box, const RayInverse& ray, double tMin, double tMax,
                     double& tEnter, double& tExit) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -26,7 +17,7 @@ bool intersectSlabs(const Aabb& box, const RayInverse& ray, double tMin, double 
         ((negative ? box.max : box.min)[axis] - ray.origin[axis]) * ray.invDirection[axis];
     double tFar =
         ((negative ? box.min : box.max)[axis] - ray.origin[axis]) * ray.invDirection[axis];
-    tFar *= 1.0 + 2.0 * gamma(3);
+    tFar *= 1.0 + 2.0 * roundingGamma<double>(3);
     tMin = std::max(tMin, tNear);
     tMax = std::min(tMax, tFar);
     if (tMin > tMax) return false;

@@ -18,7 +18,8 @@ Scene tinyScene() {
   s.camera = Camera(CameraSpec{{0, 1, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 24, 16});
   s.lights.push_back({{3, 4, 5}, Color(1.0)});
   s.spheres.push_back({{-0.8, 0, 0}, 0.6, {Color(0.2), Color(0.6), Color(0.3), 20.0, 0.0}});
-  MeshData box = makeClosedGridBox(1);  // 12 triangles: too few for a BVH
+  MeshData box = makeClosedGridBox(1);
+  box.triangles.resize(2);  // one square face: too few triangles for a BVH
   for (Vec3& v : box.vertices) v = 0.5 * v + Vec3(0.8, 0.0, 0.0);
   s.meshes.emplace_back("box.off", std::move(box), Shading::Flat, Material{});
   return s;

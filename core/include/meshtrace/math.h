@@ -20,6 +20,14 @@ struct Ray {
   Vec3 at(double t) const { return origin + t * direction; }
 };
 
+// gamma(n) = n u / (1 - n u), u the unit roundoff of Real: the bound on the
+// relative error after n roundings (Higham; pbrt 6.8.1).
+template <typename Real>
+constexpr Real roundingGamma(int n) {
+  constexpr Real u = std::numeric_limits<Real>::epsilon() / 2;
+  return (n * u) / (1 - n * u);
+}
+
 inline double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 inline double maxAbsComponent(const Vec3& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});

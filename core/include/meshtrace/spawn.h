@@ -8,20 +8,10 @@
 // leave that error box, and is then rounded one ulp further away. The true
 // surface therefore lies strictly behind the new origin at any scale, and no
 // fixed epsilon is needed.
-#include <limits>
-
 #include "meshtrace/math.h"
 #include "meshtrace/surface.h"
 
 namespace meshtrace {
-
-// gamma(n) = n u / (1 - n u), u the unit roundoff of Real: the bound on the
-// relative error after n roundings (Higham; pbrt 6.8.1).
-template <typename Real>
-constexpr Real roundingGamma(int n) {
-  constexpr Real u = std::numeric_limits<Real>::epsilon() / 2;
-  return (n * u) / (1 - n * u);
-}
 
 // The origin of a ray leaving `sp` on the side of its geometric normal that
 // `direction` points to. With Precision::Single the origin is representable
