@@ -235,7 +235,7 @@ std::string cell(std::optional<double> v, const char* format = "%.1f") {
 }
 std::string ratio(std::optional<double> a, std::optional<double> b) {
   if (!a || !b || *b == 0.0) return "–";
-  return cell(*a / *b, "%.2f×");
+  return cell(*a / *b, *a / *b < 0.01 ? "%.2g×" : "%.2f×");
 }
 
 void printScene(const SceneFigures& f, int threads) {
@@ -261,12 +261,12 @@ void printScene(const SceneFigures& f, int threads) {
   row("bytes / triangle", [](const E& e) { return e.bytesPerTriangle; }, "%.1f");
   const std::string all = std::to_string(threads) + " threads";
   const auto mr = [](const E& e, double v) { return e.measured ? O(v) : O(); };
-  row("primary Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.primary[0]); }, "%.2f");
+  row("primary Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.primary[0]); }, "%.3g");
   row(("primary Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.primary[1]); },
-      "%.2f");
-  row("shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.2f");
+      "%.3g");
+  row("shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.3g");
   row(("shadow Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.shadow[1]); },
-      "%.2f");
+      "%.3g");
   row("full run ms (load, build, render, write)", [](const E& e) { return e.renderMs; }, "%.0f");
   if (f.verifiedRays)
     std::printf("\nBVH against brute force on %zu of these rays: %zu differ.\n", f.verifiedRays,

@@ -12,14 +12,7 @@ data=bench-data
 meshes=(bunny00 fandisk ChineseDragon-10kv armadillo refined_elephant)
 seed=../shared/seed/scenes
 
-sudo_cmd=()
-[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-if ! dpkg-query -W -f='${Status}' libembree-dev 2>/dev/null | grep -q "install ok installed"; then
-  echo "bench: installing libembree-dev"
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq \
-    -o DPkg::Lock::Timeout=600 --no-install-recommends libembree-dev
-fi
+scripts/install-packages.sh libembree-dev
 
 mkdir -p "$data/cgal"
 if [ ! -f "$data/cgal/meshes.done" ]; then

@@ -53,6 +53,16 @@ MeshData triangleSoup(int n, std::mt19937_64& rng) {
   return m;
 }
 
+std::vector<Aabb> triangleBoxes(const MeshData& m) {
+  std::vector<Aabb> boxes;
+  for (const auto& t : m.triangles) {
+    Aabb b;
+    for (auto k : t) b.extend(m.vertices[k]);
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
 Scene meshScene(std::vector<Mesh> meshes) {
   Scene scene;
   scene.meshes = std::move(meshes);
@@ -272,12 +282,7 @@ TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
 // parent's, every primitive inside its leaf's box.
 TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
   const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12);
-  std::vector<Aabb> boxes;
-  for (const auto& t : knot.triangles) {
-    Aabb b;
-    for (auto k : t) b.extend(knot.vertices[k]);
-    boxes.push_back(b);
-  }
+  const std::vector<Aabb> boxes = triangleBoxes(knot);
   const Bvh bvh = buildBvh(boxes);
   ASSERT_FALSE(bvh.empty());
   EXPECT_LE(bvh.depth, kMaxBvhDepth);
@@ -307,12 +312,7 @@ TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
 // Collapsing keeps every leaf, and every child box holds its node's boxes.
 TEST(BvhBuild, FourWideTreeKeepsEveryLeafInsideItsBox) {
   const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
-  std::vector<Aabb> boxes;
-  for (const auto& t : knot.triangles) {
-    Aabb b;
-    for (auto k : t) b.extend(knot.vertices[k]);
-    boxes.push_back(b);
-  }
+  const std::vector<Aabb> boxes = triangleBoxes(knot);
   const Bvh4 bvh = collapseToBvh4(buildBvh(boxes));
   ASSERT_FALSE(bvh.nodes.empty());
   std::vector<int> seen(boxes.size(), 0);
@@ -353,12 +353,7 @@ TEST(BvhBuild, FourWideTreeKeepsEveryLeafInsideItsBox) {
 // The build is parallel, but the tree does not depend on the thread count.
 TEST(BvhBuild, SameTreeOnOneThreadAsOnAll) {
   const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 6);  // 82k triangles
-  std::vector<Aabb> boxes;
-  for (const auto& t : ball.triangles) {
-    Aabb b;
-    for (auto k : t) b.extend(ball.vertices[k]);
-    boxes.push_back(b);
-  }
+  const std::vector<Aabb> boxes = triangleBoxes(ball);
   const Bvh all = buildBvh(boxes);
   Bvh one;
   tbb::task_arena(1).execute([&] { one = buildBvh(boxes); });
