@@ -9,6 +9,8 @@
 // as the watertight test's is), and ties in t go to the primitive that
 // brute force tests first: spheres, planes, cylinders, meshes, each by index,
 // and within a mesh by triangle index.
+#include <optional>
+
 #include "meshtrace/counters.h"
 #include "meshtrace/scene.h"
 #include "meshtrace/triangle.h"
@@ -53,8 +55,7 @@ class PrimitiveQuery {
  public:
   PrimitiveQuery(const Scene& scene, const Ray& ray, TriangleKernel kernel, double tMin,
                  Counters& counters)
-      : scene_(scene), ray_(ray), kernel_(kernel), triangleRay_(ray, kernel), tMin_(tMin),
-        counters_(counters) {}
+      : scene_(scene), ray_(ray), kernel_(kernel), tMin_(tMin), counters_(counters) {}
 
   const Ray& ray() const { return ray_; }
   TriangleKernel kernel() const { return kernel_; }
@@ -87,7 +88,11 @@ class PrimitiveQuery {
     const Mesh& m = scene_.meshes[mesh];
     const TriangleIndices& idx = m.triangles()[tri];
     const auto& v = m.vertices();
-    return triangleRay_.intersect(v[idx[0]], v[idx[1]], v[idx[2]], tMin_, tMax, th);
+    // The per-ray set-up (the watertight shear's divisions) is made at the
+    // first triangle test: rays that meet no triangle, such as every ray in
+    // a scene without meshes, never pay for it.
+    if (!triangleRay_) triangleRay_.emplace(ray_, kernel_);
+    return triangleRay_->intersect(v[idx[0]], v[idx[1]], v[idx[2]], tMin_, tMax, th);
   }
 
   bool shape(ObjectKind kind, std::uint32_t i, double& t) const {
@@ -109,7 +114,7 @@ class PrimitiveQuery {
   const Scene& scene_;
   const Ray& ray_;
   TriangleKernel kernel_;
-  TriangleRay triangleRay_;
+  mutable std::optional<TriangleRay> triangleRay_;
   double tMin_;
   Counters& counters_;
 };
