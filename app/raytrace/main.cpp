@@ -58,7 +58,7 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli{"Render .sce scenes to images (PNG, BMP or PPM by extension)."};
+  CLI::App cli{"Render .sce scenes to images (PNG, BMP, PPM or JPEG by extension)."};
   Options options;
   bool all = false;
   std::string accel = toString(TraceOptions{}.accel);
