@@ -16,12 +16,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir) {
-  std::vector<std::filesystem::path> scenes;
-  std::error_code ec;
-  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
-       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file() && it->path().extension() == ".sce") scenes.push_back(it->path());
+std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
+                                              std::error_code& ec) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> scenes;
+  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_regular_file(ec) && it->path().extension() == ".sce") scenes.push_back(it->path());
   }
   std::sort(scenes.begin(), scenes.end());
   return scenes;
@@ -65,7 +66,12 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
                  outDir.string().c_str(), ec.message().c_str());
     return 1;
   }
-  const auto scenes = findScenes(dir);
+  const auto scenes = findScenes(dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "error: %s: cannot list the folder (%s)\n", dir.string().c_str(),
+                 ec.message().c_str());
+    return 1;
+  }
   if (scenes.empty()) {
     std::fprintf(stderr, "error: %s: no .sce files found\n", dir.string().c_str());
     return 1;

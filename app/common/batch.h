@@ -6,14 +6,17 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "meshtrace/scene.h"
 
 namespace meshtrace::app {
 
-// Every .sce file below `dir`, sorted by path.
-std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir);
+// Every .sce file below `dir`, sorted by path. Unreadable subfolders are
+// skipped; `ec` reports a folder that could not be listed at all.
+std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
+                                              std::error_code& ec);
 
 // Loads a scene, prints its warnings and a one-line summary with the load
 // time. Prints the error and returns nothing on bad input.

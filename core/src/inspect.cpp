@@ -2,8 +2,9 @@
 
 #include <algorithm>
 
-#include "meshtrace/spawn.h"
+#include "meshtrace/render.h"
 #include "meshtrace/surface.h"
+#include "whitted.h"
 
 namespace meshtrace {
 
@@ -50,103 +51,81 @@ std::vector<BoxRecord> boxesEntered(const Scene& scene, const Ray& ray) {
   return boxes;
 }
 
-class Inspector {
+// Records each step of whittedTrace into a PixelInspection.
+class Recorder {
  public:
-  Inspector(const SceneIntersector& intersector, PixelInspection& out)
-      : intersector_(intersector), scene_(intersector.scene()), out_(out) {}
+  Recorder(const SceneIntersector& intersector, PixelInspection& out)
+      : intersector_(intersector), out_(out) {}
 
-  // Mirrors Integrator::trace, operation for operation, so the colours agree
-  // to the bit.
-  Color trace(const Ray& ray, int level, double weight) {
-    out_.bounces.emplace_back();
-    const std::size_t index = out_.bounces.size() - 1;
-    {
-      BounceRecord& b = out_.bounces[index];
-      b.level = level;
-      b.ray = ray;
-      b.weight = weight;
-      b.boxes = boxesEntered(scene_, ray);
+  void beginBounce(int level, const Ray& ray) {
+    BounceRecord b;
+    b.level = level;
+    b.ray = ray;
+    if (!open_.empty()) {
+      const BounceRecord& parent = out_.bounces[open_.back()];
+      b.weight = parent.weight * parent.mirror;
     }
-    Hit hit;
-    if (!intersector_.closestHit(ray, kSpawnTMin, hit, out_.counters)) {
-      out_.bounces[index].color = scene_.background;
-      return scene_.background;
+    b.boxes = boxesEntered(intersector_.scene(), ray);
+    open_.push_back(out_.bounces.size());
+    out_.bounces.push_back(std::move(b));
+  }
+  void surface(const Hit& hit, const SurfacePoint& sp) {
+    current().hit = true;
+    current().surface = describeSurface(intersector_.scene(), hit, sp);
+  }
+  void ambient(const Color& c) { current().ambient = c; }
+  void lightBehind(std::size_t light, const Vec3& l, double nl) {
+    current().lights.push_back(lightRecord(light, l, nl));
+  }
+  void lightShadowed(std::size_t light, const Vec3& l, double nl, const Ray& shadow,
+                     double lightDistance) {
+    LightRecord rec = lightRecord(light, l, nl);
+    rec.shadowed = true;
+    // The nearest blocker, found with a closest-hit query limited to the
+    // light; its counters are not the render's, so they are kept apart.
+    Counters scratch;
+    Hit blocker;
+    blocker.t = lightDistance;
+    if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch)) {
+      rec.blocker = blocker.ref;
+      rec.blockerT = blocker.t;
     }
-    const SurfacePoint sp = surfaceAt(scene_, ray, hit, intersector_.options().triangle.precision);
-    BounceRecord& b = out_.bounces[index];
-    b.hit = true;
-    b.surface = describeSurface(scene_, hit, sp);
-    b.local = localColor(-ray.direction, sp, b);
-    b.mirror = sp.material->mirror;
-    if (b.mirror <= 0.0 || level >= scene_.depth) {
-      b.color = b.local;
-      return b.local;
-    }
-    b.reflects = true;
-    const Vec3 d = ray.direction;
-    const Vec3 reflected = d - 2.0 * glm::dot(d, sp.normal) * sp.normal;
-    const Ray bounce{spawnOrigin(sp, reflected), glm::normalize(reflected)};
-    ++out_.counters.reflectionRays;
-    const double mirror = b.mirror;
-    const Color local = b.local;
-    // `b` may move when the next level appends its record.
-    const Color color = (1.0 - mirror) * local + mirror * trace(bounce, level + 1, weight * mirror);
-    out_.bounces[index].color = color;
-    return color;
+    current().lights.push_back(rec);
+  }
+  void lightLit(std::size_t light, const Vec3& l, double nl, const Color& diffuse,
+                const Color& specular) {
+    LightRecord rec = lightRecord(light, l, nl);
+    rec.diffuse = diffuse;
+    rec.specular = specular;
+    current().lights.push_back(rec);
+  }
+  void local(const Color& c, double mirror, bool reflects) {
+    current().local = c;
+    current().mirror = mirror;
+    current().reflects = reflects;
+  }
+  void endBounce(const Color& c) {
+    current().color = c;
+    open_.pop_back();
   }
 
  private:
-  Color localColor(const Vec3& viewDir, const SurfacePoint& sp, BounceRecord& b) {
-    const Material& m = *sp.material;
-    Color color = scene_.ambience * m.ambient;
-    b.ambient = color;
-    for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
-      const Light& light = scene_.lights[i];
-      LightRecord rec;
-      rec.light = i;
-      const Vec3 toLight = light.position - sp.point;
-      const Vec3 l = glm::normalize(toLight);
-      const double nl = glm::dot(sp.normal, l);
-      rec.toLight = l;
-      rec.nDotL = nl;
-      rec.facing = nl > 0.0;
-      if (!rec.facing) {
-        b.lights.push_back(rec);
-        continue;
-      }
-      const Ray shadow{spawnOrigin(sp, l), l};
-      ++out_.counters.shadowRays;
-      const double lightDistance = glm::length(light.position - shadow.origin);
-      if (intersector_.occluded(shadow, kSpawnTMin, lightDistance, out_.counters)) {
-        rec.shadowed = true;
-        // The nearest blocker, found with a closest-hit query limited to the
-        // light; its counters are not the render's, so they are kept apart.
-        Counters scratch;
-        Hit blocker;
-        blocker.t = lightDistance;
-        if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch)) {
-          rec.blocker = blocker.ref;
-          rec.blockerT = blocker.t;
-        }
-        b.lights.push_back(rec);
-        continue;
-      }
-      rec.diffuse = light.color * m.diffuse * nl;
-      color += rec.diffuse;
-      const Vec3 r = 2.0 * nl * sp.normal - l;
-      const double rv = glm::dot(r, viewDir);
-      if (rv > 0.0) {
-        rec.specular = light.color * m.specular * std::pow(rv, m.shininess);
-        color += rec.specular;
-      }
-      b.lights.push_back(rec);
-    }
-    return color;
+  // The record of the innermost bounce still being traced. Looked up by index
+  // each time: a deeper bounce appends to the vector and may move it.
+  BounceRecord& current() { return out_.bounces[open_.back()]; }
+
+  static LightRecord lightRecord(std::size_t light, const Vec3& l, double nl) {
+    LightRecord rec;
+    rec.light = light;
+    rec.toLight = l;
+    rec.nDotL = nl;
+    rec.facing = nl > 0.0;
+    return rec;
   }
 
   const SceneIntersector& intersector_;
-  const Scene& scene_;
   PixelInspection& out_;
+  std::vector<std::size_t> open_;  // indices of the bounces being traced, outermost first
 };
 
 }  // namespace
@@ -157,8 +136,8 @@ PixelInspection inspectPixel(const SceneIntersector& intersector, const Camera& 
   out.x = x;
   out.y = y;
   ++out.counters.primaryRays;
-  Inspector inspector(intersector, out);
-  out.color = inspector.trace(camera.primaryRay(x, y), 0, 1.0);
+  Recorder recorder(intersector, out);
+  out.color = whittedTrace(intersector, camera.primaryRay(x, y), 0, out.counters, recorder);
   return out;
 }
 
@@ -183,16 +162,6 @@ std::int32_t objectIndex(const Scene& scene, const PrimitiveRef& ref) {
 std::uint64_t traversalCost(const Counters& counters) {
   return counters.nodeVisits + counters.boxTests + counters.triangleTests + counters.sphereTests +
          counters.planeTests + counters.cylinderTests;
-}
-
-int boxHitCount(const Scene& scene, const Ray& ray) {
-  const RayInverse inverse(ray);
-  int n = 0;
-  for (const Mesh& mesh : scene.meshes) {
-    double tEnter, tExit;
-    n += intersectSlabs(mesh.bounds(), inverse, 0.0, kInfinity, tEnter, tExit);
-  }
-  return n;
 }
 
 PixelProbe probePixel(const SceneIntersector& intersector, const Camera& camera, double x,

@@ -114,10 +114,8 @@ struct ProgressiveRenderer::Job {
   bool finished() const { return itemsDone.load() == itemCount; }
   std::size_t index(int col, int row) const { return static_cast<std::size_t>(row) * width + col; }
 
-  // What Integrator::pixel does, through this job's camera.
   Color tracePixel(double x, double y, Counters& work) const {
-    ++work.primaryRays;
-    return integrator->trace(camera.primaryRay(x, y), 0, work);
+    return integrator->pixel(camera, x, y, work);
   }
 
   // Runs work item `item`; false if cancelled part way.

@@ -52,20 +52,24 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
   return image;
 }
 
+int boxHitCount(const Scene& scene, const Ray& ray) {
+  const RayInverse inverse(ray);
+  int n = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    double tEnter, tExit;
+    n += intersectSlabs(mesh.bounds(), inverse, 0.0, kInfinity, tEnter, tExit);
+  }
+  return n;
+}
+
 BoxHitCounts countBoxHits(const Scene& scene, int threads) {
   BoxHitCounts out;
   out.width = scene.camera.width();
   out.height = scene.camera.height();
   out.counts.assign(static_cast<std::size_t>(out.width) * out.height, 0);
-  forEachPixel(out.width, out.height, threads, [&](int x, int y, int row, Counters& c) {
-    const RayInverse ray(scene.camera.primaryRay(x, y));
-    int n = 0;
-    for (const Mesh& mesh : scene.meshes) {
-      ++c.boxTests;
-      double tEnter, tExit;
-      n += intersectSlabs(mesh.bounds(), ray, 0.0, kInfinity, tEnter, tExit);
-    }
-    out.counts[static_cast<std::size_t>(row) * out.width + x] = n;
+  forEachPixel(out.width, out.height, threads, [&](int x, int y, int row, Counters&) {
+    out.counts[static_cast<std::size_t>(row) * out.width + x] =
+        boxHitCount(scene, scene.camera.primaryRay(x, y));
   });
   for (int n : out.counts) out.maxCount = std::max(out.maxCount, n);
   return out;

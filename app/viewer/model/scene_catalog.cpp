@@ -1,5 +1,7 @@
 #include "scene_catalog.h"
 
+#include "../../common/batch.h"
+
 #include <algorithm>
 #include <system_error>
 
@@ -14,13 +16,8 @@ SceneFolder scanFolder(const fs::path& root, const std::string& title) {
     folder.error = "not a folder: " + root.string();
     return folder;
   }
-  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
-  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file(ec) && it->path().extension() == ".sce")
-      folder.scenes.push_back(it->path());
-  }
+  folder.scenes = app::findScenes(root, ec);
   if (ec) folder.error = "could not read " + root.string() + ": " + ec.message();
-  std::sort(folder.scenes.begin(), folder.scenes.end());
   return folder;
 }
 

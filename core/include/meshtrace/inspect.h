@@ -1,7 +1,6 @@
 #pragma once
-// Everything the viewer's pixel inspector shows about one pixel, computed by
-// a traversal of its own that follows the Integrator step for step and
-// records each step: the hit, its normals, the shading per light (and what
+// Everything the viewer's pixel inspector shows about one pixel, recorded
+// while the renderer's own shading routine (whitted.h) traces it: the hit, its normals, the shading per light (and what
 // blocks a shadowed light), each reflection bounce and the mesh boxes the ray
 // entered. Its colour is the Integrator's, to the bit (a test holds it to
 // that), so what it explains is what was rendered.
@@ -96,7 +95,5 @@ std::int32_t objectIndex(const Scene& scene, const PrimitiveRef& ref);
 // tested and the primitives (triangles, spheres, planes, cylinders) it tested.
 std::uint64_t traversalCost(const Counters& counters);
 
-// Number of mesh boxes the ray meets at t >= 0, as debug_aabb counts them.
-int boxHitCount(const Scene& scene, const Ray& ray);
 
 }  // namespace meshtrace

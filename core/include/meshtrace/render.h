@@ -16,6 +16,10 @@ Image render(const Scene& scene, const RenderOptions& options, Counters* counter
 // With an intersector built beforehand (so that its build can be timed apart).
 Image render(const SceneIntersector& intersector, int threads, Counters* counters = nullptr);
 
+// Number of mesh bounding boxes `ray` meets at t >= 0 (a box holding the
+// origin counts), as the debug_aabb image counts them.
+int boxHitCount(const Scene& scene, const Ray& ray);
+
 // Per pixel, the number of mesh bounding boxes the primary ray meets at t >= 0.
 struct BoxHitCounts {
   int width = 0, height = 0;

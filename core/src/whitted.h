@@ -1,0 +1,102 @@
+#pragma once
+// The Whitted shading recursion, written once. The Integrator runs it with
+// NoObserver, whose hooks inline to nothing; the pixel inspector runs it with
+// an observer that records every step, so what it explains is exactly what
+// was rendered.
+#include <cstddef>
+
+#include "meshtrace/intersector.h"
+#include "meshtrace/spawn.h"
+#include "meshtrace/surface.h"
+
+namespace meshtrace {
+
+struct NoObserver {
+  void beginBounce(int /*level*/, const Ray&) {}
+  void surface(const Hit&, const SurfacePoint&) {}
+  void ambient(const Color&) {}
+  void lightBehind(std::size_t /*light*/, const Vec3& /*l*/, double /*nl*/) {}
+  // `shadow` reached something before the light at `lightDistance`.
+  void lightShadowed(std::size_t, const Vec3&, double, const Ray& /*shadow*/,
+                     double /*lightDistance*/) {}
+  void lightLit(std::size_t, const Vec3&, double, const Color& /*diffuse*/,
+                const Color& /*specular*/) {}
+  void local(const Color&, double /*mirror*/, bool /*reflects*/) {}
+  void endBounce(const Color&) {}
+};
+
+// Ambient plus, per light, diffuse and specular unless the light is behind
+// the surface or shadowed.
+template <typename Observer>
+Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
+                   const SurfacePoint& sp, Counters& counters, Observer& observer) {
+  const Scene& scene = intersector.scene();
+  const Material& m = *sp.material;
+  Color color = scene.ambience * m.ambient;
+  observer.ambient(color);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const Vec3 l = glm::normalize(light.position - sp.point);
+    const double nl = glm::dot(sp.normal, l);
+    // A light behind the surface adds nothing, so its shadow ray is left out.
+    if (!(nl > 0.0)) {
+      observer.lightBehind(i, l, nl);
+      continue;
+    }
+    const Ray shadow{spawnOrigin(sp, l), l};
+    ++counters.shadowRays;
+    // The blocker test runs to the light's distance from the shadow ray's own
+    // origin: a blocker near the light counts as much as one near the point.
+    const double lightDistance = glm::length(light.position - shadow.origin);
+    if (intersector.occluded(shadow, kSpawnTMin, lightDistance, counters)) {
+      observer.lightShadowed(i, l, nl, shadow, lightDistance);
+      continue;
+    }
+    const Color diffuse = light.color * m.diffuse * nl;
+    color += diffuse;
+    Color specular(0.0);
+    const Vec3 r = 2.0 * nl * sp.normal - l;
+    const double rv = glm::dot(r, viewDir);
+    if (rv > 0.0) {
+      specular = light.color * m.specular * std::pow(rv, m.shininess);
+      color += specular;
+    }
+    observer.lightLit(i, l, nl, diffuse, specular);
+  }
+  return color;
+}
+
+// Colour seen along `ray` at recursion level `level` (0 = primary).
+template <typename Observer>
+Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
+                   Counters& counters, Observer& observer) {
+  const Scene& scene = intersector.scene();
+  observer.beginBounce(level, ray);
+  Hit hit;
+  if (!intersector.closestHit(ray, kSpawnTMin, hit, counters)) {
+    observer.endBounce(scene.background);
+    return scene.background;
+  }
+  const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
+  observer.surface(hit, sp);
+  const Color local = whittedLocal(intersector, -ray.direction, sp, counters, observer);
+  const double mirror = sp.material->mirror;
+  // The deepest level keeps its local colour rather than mixing with black.
+  const bool reflects = mirror > 0.0 && level < scene.depth;
+  observer.local(local, mirror, reflects);
+  if (!reflects) {
+    observer.endBounce(local);
+    return local;
+  }
+  const Vec3 d = ray.direction;
+  const Vec3 reflected = d - 2.0 * glm::dot(d, sp.normal) * sp.normal;
+  const Ray bounce{spawnOrigin(sp, reflected), glm::normalize(reflected)};
+  ++counters.reflectionRays;
+  const Color color =
+      (1.0 - mirror) * local +
+      mirror * whittedTrace(intersector, bounce, level + 1, counters, observer);
+  observer.endBounce(color);
+  return color;
+}
+
+}  // namespace meshtrace
