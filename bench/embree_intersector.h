@@ -44,7 +44,9 @@ class EmbreeIntersector : public ExternalIntersector {
   double buildSeconds() const { return buildSeconds_; }
   // Memory Embree holds after the build (its BVH and vertex buffers), plus
   // the index buffers it shares with our meshes.
-  std::size_t bytes() const { return static_cast<std::size_t>(held_.load()) + sharedBytes_; }
+  std::size_t bytes() const { return builtBytes() + sharedBytes_; }
+  // What Embree allocated itself: its BVH, triangle leaves and float vertices.
+  std::size_t builtBytes() const { return static_cast<std::size_t>(held_.load()); }
 
  private:
   static bool monitor(void* self, ssize_t bytes, bool post);

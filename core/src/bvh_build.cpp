@@ -192,6 +192,12 @@ class Builder {
   }
 
  private:
+  // Primitive tests a leaf of n primitives costs.
+  float tests(std::uint32_t n) const {
+    const auto block = static_cast<std::uint32_t>(options_.leafBlock);
+    return static_cast<float>((n + block - 1) / block);
+  }
+
   // The cheapest bin boundary over the three axes, or axis -1 if none.
   Split findSplit(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
     const Bins bins =
@@ -216,7 +222,7 @@ class Builder {
       for (int i = bins_ - 1; i > 0; --i) {
         right.extend(bins.box[a][i]);
         rightCount += bins.count[a][i];
-        rightCost[i - 1] = right.halfArea() * rightCount;
+        rightCost[i - 1] = right.halfArea() * tests(rightCount);
       }
       Box4 left;
       std::uint32_t leftCount = 0;
@@ -224,7 +230,7 @@ class Builder {
         left.extend(bins.box[a][i]);
         leftCount += bins.count[a][i];
         if (leftCount == 0 || leftCount == end - begin) continue;
-        const float cost = left.halfArea() * leftCount + rightCost[i];
+        const float cost = left.halfArea() * tests(leftCount) + rightCost[i];
         if (best.axis < 0 || cost < best.cost) best = {a, i, cost};
       }
     }
@@ -291,7 +297,7 @@ class Builder {
     const Split split = depth < kMedianDepth ? findSplit(begin, end, binner) : Split{};
     if (split.axis >= 0) {
       const double area = bounds.box.halfArea();
-      const double leafCost = options_.primitiveCost * n * area;
+      const double leafCost = options_.primitiveCost * tests(n) * area;
       const double splitCost = options_.nodeCost * area + options_.primitiveCost * split.cost;
       if (small && leafCost <= splitCost) return makeLeaf(node, begin, end, depth);
       mid = partition(begin, end, binner, split, left, right);

@@ -27,7 +27,7 @@ Aabb cylinderBox(const Cylinder& c) {
   return {c.center - half, c.center + half};
 }
 
-Bvh4 buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
+MeshBvh buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
   const auto& v = mesh.vertices();
   const auto& tris = mesh.triangles();
   std::vector<Aabb> boxes(tris.size());
@@ -38,7 +38,11 @@ Bvh4 buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
                         for (std::uint32_t k : tris[i]) b.extend(v[k]);
                       }
                     });
-  return collapseToBvh4(buildBvh(boxes, options));
+  MeshBvh out;
+  out.tree = collapseToBvh4(buildBvh(boxes, options));
+  out.frame = blockFrame(mesh);
+  out.blocks = makeTriangleBlocks(mesh, out.frame, out.tree);
+  return out;
 }
 
 }  // namespace
@@ -72,7 +76,7 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
   int meshDepth = 0;
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     const Mesh& mesh = scene.meshes[i];
-    const Bvh4& bvh = meshBvhs_[i];
+    const MeshBvh& bvh = meshBvhs_[i];
     if (bvh.empty()) {
       if (!mesh.triangles().empty())
         stats_.leftOut.push_back("no BVH for " + mesh.file().filename().string() + ": " +
@@ -83,7 +87,7 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
     ++stats_.meshesWithBvh;
     stats_.trianglesInBvhs += mesh.triangles().size();
     stats_.meshBvhBytes += bvh.bytes();
-    meshDepth = std::max(meshDepth, bvh.depth);
+    meshDepth = std::max(meshDepth, bvh.tree.depth);
   }
   stats_.maxDepth += meshDepth;
   stats_.buildSeconds =

@@ -1,8 +1,18 @@
 // Closest-hit and any-hit queries through the scene's two-level BVH.
+
 #include "meshtrace/scene_bvh.h"
 #include "primitive_query.h"
 
 namespace meshtrace {
+
+namespace {
+// Set bits of a 4-bit lane mask (std::popcount is a library call without
+// the popcnt instruction of later x86-64 levels).
+int laneCount(int mask) {
+  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCount[mask & 15];
+}
+}  // namespace
 
 BoxRay4 SceneBvh::boxRay(const PrimitiveQuery& query) const {
   const bool single = query.kernel().precision == Precision::Single;
@@ -23,16 +33,21 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
         query.offerShape(o.kind, o.index, closest);
         continue;
       }
-      const Bvh4& bvh = meshBvhs_[o.index];
+      const MeshBvh& bvh = meshBvhs_[o.index];
       if (bvh.empty()) {
         const auto count = static_cast<std::uint32_t>(scene_.meshes[o.index].triangles().size());
         for (std::uint32_t t = 0; t < count; ++t) query.offerTriangle(o.index, t, closest);
         continue;
       }
-      traverseClosest(bvh, ray, tMin, closest.t(), visits,
-                      [&](std::uint32_t tFirst, std::uint32_t tn) {
-                        for (std::uint32_t j = tFirst; j < tFirst + tn; ++j)
-                          query.offerTriangle(o.index, bvh.order[j], closest);
+      const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+      traverseClosest(bvh.tree, ray, tMin, closest.t(), visits,
+                      [&](std::uint32_t block, std::uint32_t n) {
+                        const TriangleBlock4& b = bvh.blocks[block];
+                        int mask = blockRay.candidates(b, static_cast<int>(n), tMin, closest.t());
+                        counters.triangleTests += n - laneCount(mask);
+                        for (; mask; mask &= mask - 1)
+                          query.offerTriangle(o.index, b.id[std::countr_zero(static_cast<unsigned>(mask))],
+                                              closest);
                       });
     }
   });
@@ -53,7 +68,7 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
             if (query.shapeBlocks(o.kind, o.index, tMax)) return true;
             continue;
           }
-          const Bvh4& bvh = meshBvhs_[o.index];
+          const MeshBvh& bvh = meshBvhs_[o.index];
           if (bvh.empty()) {
             const auto count =
                 static_cast<std::uint32_t>(scene_.meshes[o.index].triangles().size());
@@ -61,13 +76,18 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
               if (query.triangleBlocks(o.index, t, tMax)) return true;
             continue;
           }
-          const bool hit = traverseAny(bvh, ray, tMin, tMax, visits,
-                                       [&](std::uint32_t tFirst, std::uint32_t tn) {
-                                         for (std::uint32_t j = tFirst; j < tFirst + tn; ++j)
-                                           if (query.triangleBlocks(o.index, bvh.order[j], tMax))
-                                             return true;
-                                         return false;
-                                       });
+          const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+          const bool hit = traverseAny(
+              bvh.tree, ray, tMin, tMax, visits, [&](std::uint32_t block, std::uint32_t n) {
+                const TriangleBlock4& b = bvh.blocks[block];
+                int mask = blockRay.candidates(b, static_cast<int>(n), tMin, tMax);
+                counters.triangleTests += n - laneCount(mask);
+                for (; mask; mask &= mask - 1)
+                  if (query.triangleBlocks(
+                          o.index, b.id[std::countr_zero(static_cast<unsigned>(mask))], tMax))
+                    return true;
+                return false;
+              });
           if (hit) return true;
         }
         return false;

@@ -40,6 +40,7 @@ struct BvhBuildOptions {
   int maxLeafSize = 4;       // larger sets are always split
   double nodeCost = 1.0;     // SAH: cost of one node visit (two box tests) ...
   double primitiveCost = 1.0;  // ... relative to one primitive test
+  int leafBlock = 1;  // primitives tested together: a leaf of n costs ceil(n / leafBlock) tests
 };
 
 // Binned SAH (Wald, "On fast construction of SAH-based bounding volume

@@ -26,7 +26,7 @@ struct Bvh4 {
   float rootBounds[6] = {0, 0, 0, 0, 0, 0};
   int depth = 0;
 
-  bool empty() const { return order.empty(); }
+  bool empty() const { return nodes.empty() && rootCount == 0; }
   std::size_t bytes() const {
     return nodes.size() * sizeof(Bvh4Node) + order.size() * sizeof(std::uint32_t);
   }

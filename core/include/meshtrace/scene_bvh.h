@@ -12,6 +12,7 @@
 #include "meshtrace/bvh4_traverse.h"
 #include "meshtrace/counters.h"
 #include "meshtrace/scene.h"
+#include "meshtrace/triangle_block.h"
 
 namespace meshtrace {
 
@@ -23,9 +24,23 @@ class PrimitiveQuery;
 // BENCHMARKS.md): a BVH gains nothing at 8 triangles and pays from 12 on.
 inline constexpr std::size_t kMinBvhTriangles = 12;
 
+// A mesh's BVH: 4-wide nodes whose leaves are triangle blocks.
+struct MeshBvh {
+  Bvh4 tree;  // a leaf's `first` is its block index
+  std::vector<TriangleBlock4> blocks;
+  BlockFrame frame;
+
+  bool empty() const { return blocks.empty(); }
+  std::size_t bytes() const {
+    return tree.nodes.size() * sizeof(Bvh4Node) + blocks.size() * sizeof(TriangleBlock4);
+  }
+};
+
 struct SceneBvhOptions {
   std::size_t minMeshTriangles = kMinBvhTriangles;
-  BvhBuildOptions mesh{};
+  // A leaf is one block of up to four triangles, tested at once.
+  BvhBuildOptions mesh{.bins = 16, .maxLeafSize = 4, .nodeCost = 1.0, .primitiveCost = 1.0,
+                       .leafBlock = 4};
   BvhBuildOptions top{.bins = 16, .maxLeafSize = 2, .nodeCost = 1.0, .primitiveCost = 2.0};
 };
 
@@ -33,7 +48,7 @@ struct SceneBvhStats {
   double buildSeconds = 0.0;
   std::size_t meshesWithBvh = 0;
   std::size_t trianglesInBvhs = 0;
-  std::size_t meshBvhBytes = 0;  // nodes and triangle order of all mesh BVHs
+  std::size_t meshBvhBytes = 0;  // nodes and triangle blocks of all mesh BVHs
   std::size_t topLevelObjects = 0;
   std::size_t topLevelBytes = 0;
   int maxDepth = 0;              // top level plus the deepest mesh BVH
@@ -51,7 +66,7 @@ class SceneBvh {
 
   const SceneBvhStats& stats() const { return stats_; }
   // The BVH of mesh `i`; empty when the mesh is too small to have one.
-  const Bvh4& meshBvh(std::size_t i) const { return meshBvhs_[i]; }
+  const MeshBvh& meshBvh(std::size_t i) const { return meshBvhs_[i]; }
   const Bvh4& topLevel() const { return top_; }
 
  private:
@@ -63,7 +78,7 @@ class SceneBvh {
   };
 
   const Scene& scene_;
-  std::vector<Bvh4> meshBvhs_;
+  std::vector<MeshBvh> meshBvhs_;
   std::vector<Object> objects_;  // top-level primitives
   Bvh4 top_;
   double sceneScale_ = 0.0;  // largest coordinate of a bounded object
