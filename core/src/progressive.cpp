@@ -3,24 +3,13 @@
 #include <chrono>
 #include <cmath>
 
-#include "meshtrace/image.h"
-#include "meshtrace/integrator.h"
+#include "progressive_job.h"
 
 namespace meshtrace {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-
-double msBetween(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-// The largest power of two <= v, at least 1.
-int powerOfTwoAtMost(int v) {
-  int p = 1;
-  while (p * 2 <= v) p *= 2;
-  return p;
-}
+using progressive_detail::Clock;
+using progressive_detail::msBetween;
 }  // namespace
 
 void sampleOffset(int k, double& dx, double& dy) {
@@ -41,165 +30,31 @@ const SceneIntersector& PreparedScene::intersector() const {
   return *intersector_;
 }
 
-const PixelProbe* ProgressiveFrame::probeAt(int col, int row) const {
-  if (probes.empty() || col < 0 || row < 0 || col >= width || row >= height) return nullptr;
+std::optional<std::size_t> ProgressiveFrame::cornerOf(int col, int row) const {
+  if (col < 0 || row < 0 || col >= width || row >= height) return std::nullopt;
   const int step = tileStep[(row / tileSize) * tilesX + col / tileSize];
-  if (step == 0) return nullptr;
-  return &probes[static_cast<std::size_t>(row - row % step) * width + (col - col % step)];
+  if (step == 0) return std::nullopt;
+  return static_cast<std::size_t>(row - row % step) * width + (col - col % step);
 }
 
-struct ProgressiveRenderer::Job {
-  std::uint64_t id = 0;
-  std::shared_ptr<const PreparedScene> scene;
-  Camera camera;
-  ProgressiveSettings settings;
-  Clock::time_point start = Clock::now();
+const PixelProbe* ProgressiveFrame::probeAt(int col, int row) const {
+  const auto i = probes.empty() ? std::nullopt : cornerOf(col, row);
+  return i ? &probes[*i] : nullptr;
+}
 
-  std::once_flag built;
-  std::unique_ptr<Integrator> integrator;
+const std::uint8_t* ProgressiveFrame::rgbaAt(int col, int row) const {
+  const auto i = rgba.empty() ? std::nullopt : cornerOf(col, row);
+  return i ? &rgba[*i * 4] : nullptr;
+}
 
-  int width = 0, height = 0, tile = 0, tilesX = 0, tilesY = 0, tileCount = 0;
-  std::vector<int> steps;  // block size per level pass, coarse to 1
-  int passCount = 0;
-  int itemCount = 0;
-  std::atomic<int> nextItem{0};
-  std::atomic<bool> cancelled{false};
-  std::unique_ptr<std::atomic<int>[]> tilePasses;  // passes finished per tile
-  std::unique_ptr<std::atomic<int>[]> passTiles;   // tiles finished per pass
-  std::atomic<int> itemsDone{0};
-  std::atomic<long long> exactPixelsDone{0};
-
-  // Worker-side data: a tile is only ever touched by the worker holding its
-  // current pass, and passes of a tile run in order.
-  std::vector<Color> sum;
-  std::vector<PixelProbe> probeSamples;
-
-  // Published data, under `mutex`.
-  mutable std::mutex mutex;
-  std::vector<std::uint8_t> rgba;
-  std::vector<PixelProbe> probes;
-  std::vector<int> tileStep;
-  std::vector<std::uint32_t> tileVersion;
-  Counters counters;
-  double firstCoarseMs = -1.0, exactMs = -1.0, finishedMs = -1.0;
-
-  Job(std::uint64_t jobId, std::shared_ptr<const PreparedScene> s, const Camera& cam,
-      const ProgressiveSettings& st)
-      : id(jobId), scene(std::move(s)), camera(cam), settings(st) {
-    width = camera.width();
-    height = camera.height();
-    tile = powerOfTwoAtMost(std::max(1, settings.firstStep));
-    tilesX = (width + tile - 1) / tile;
-    tilesY = (height + tile - 1) / tile;
-    tileCount = tilesX * tilesY;
-    for (int s2 = tile; s2 >= 1; s2 /= 2) steps.push_back(s2);
-    passCount = static_cast<int>(steps.size()) + (settings.color ? settings.extraSamples : 0);
-    itemCount = passCount * tileCount;
-    tilePasses.reset(new std::atomic<int>[tileCount]);
-    for (int i = 0; i < tileCount; ++i) tilePasses[i] = 0;
-    passTiles.reset(new std::atomic<int>[passCount]);
-    for (int i = 0; i < passCount; ++i) passTiles[i] = 0;
-    const std::size_t pixels = static_cast<std::size_t>(width) * height;
-    if (settings.color) sum.assign(pixels, Color(0.0));
-    if (settings.probes) {
-      probeSamples.assign(pixels, PixelProbe{});
-      probes.assign(pixels, PixelProbe{});
-    }
-    rgba.assign(pixels * 4, 0);
-    tileStep.assign(tileCount, 0);
-    tileVersion.assign(tileCount, 0);
-  }
-
-  int levelCount() const { return static_cast<int>(steps.size()); }
-  bool finished() const { return itemsDone.load() == itemCount; }
-  std::size_t index(int col, int row) const { return static_cast<std::size_t>(row) * width + col; }
-
-  Color tracePixel(double x, double y, Counters& work) const {
-    return integrator->pixel(camera, x, y, work);
-  }
-
-  // Runs work item `item`; false if cancelled part way.
-  bool run(int item) {
-    const int pass = item / tileCount;
-    const int t = item % tileCount;
-    // The tile's previous pass may still be running on another worker.
-    while (tilePasses[t].load(std::memory_order_acquire) < pass) {
-      if (cancelled.load(std::memory_order_relaxed)) return false;
-      std::this_thread::yield();
-    }
-    const int c0 = (t % tilesX) * tile, r0 = (t / tilesX) * tile;
-    const int c1 = std::min(c0 + tile, width), r1 = std::min(r0 + tile, height);
-    Counters work;
-    const int step = pass < levelCount() ? steps[pass] : 1;
-    long long traced = 0;
-    if (pass >= levelCount()) {
-      double dx, dy;
-      sampleOffset(pass - levelCount() + 1, dx, dy);
-      for (int r = r0; r < r1; ++r)
-        for (int c = c0; c < c1; ++c) {
-          if (cancelled.load(std::memory_order_relaxed)) return false;
-          sum[index(c, r)] += tracePixel(c + dx, height - 1 - r + dy, work);
-        }
-    } else {
-      // The pixels on this pass's grid that the coarser grids did not trace
-      // (tile corners are multiples of every step).
-      for (int r = r0; r < r1; r += step)
-        for (int c = c0; c < c1; c += step) {
-          if (pass > 0 && (c - c0) % (2 * step) == 0 && (r - r0) % (2 * step) == 0) continue;
-          if (cancelled.load(std::memory_order_relaxed)) return false;
-          ++traced;
-          const double x = c, y = height - 1 - r;
-          if (settings.color) sum[index(c, r)] = tracePixel(x, y, work);
-          if (settings.probes) {
-            probeSamples[index(c, r)] = probePixel(scene->intersector(), camera, x, y);
-            if (!settings.color) ++work.primaryRays;
-          }
-        }
-    }
-    publish(t, pass, step, c0, r0, c1, r1, work);
-    exactPixelsDone += traced;
-    tilePasses[t].store(pass + 1, std::memory_order_release);
-    const int tilesDone = ++passTiles[pass];
-    ++itemsDone;
-    if (tilesDone == tileCount) {
-      const double ms = msBetween(start, Clock::now());
-      std::lock_guard<std::mutex> lock(mutex);
-      if (pass == 0) firstCoarseMs = ms;
-      if (pass == levelCount() - 1) exactMs = ms;
-      if (pass == passCount - 1) finishedMs = ms;
-    }
-    return true;
-  }
-
-  void publish(int t, int pass, int step, int c0, int r0, int c1, int r1, const Counters& work) {
-    const double samples = pass < levelCount() ? 1.0 : double(pass - levelCount() + 2);
-    std::lock_guard<std::mutex> lock(mutex);
-    // Each traced pixel stands for the step x step block it is the corner of.
-    for (int br = r0; br < r1; br += step) {
-      for (int bc = c0; bc < c1; bc += step) {
-        std::uint8_t value[4] = {0, 0, 0, 255};
-        if (settings.color) {
-          const Color v = samples == 1.0 ? sum[index(bc, br)] : sum[index(bc, br)] / samples;
-          for (int k = 0; k < 3; ++k) value[k] = toByte(v[k]);
-        }
-        for (int r = br; r < std::min(br + step, r1); ++r)
-          for (int c = bc; c < std::min(bc + step, c1); ++c)
-            std::copy(value, value + 4, &rgba[index(c, r) * 4]);
-        if (settings.probes) probes[index(bc, br)] = probeSamples[index(bc, br)];
-      }
-    }
-    tileStep[t] = step;
-    ++tileVersion[t];
-    counters += work;
-  }
-};
-
-ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> workerStart) {
+ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> workerStart,
+                                         std::function<void(const PassFinished&)> passFinished)
+    : passFinished_(std::move(passFinished)), pool_(std::make_shared<BufferPool>()) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (int i = 0; i < threads; ++i)
-    workers_.emplace_back([this, workerStart] {
+    workers_.emplace_back([this, workerStart, i] {
       if (workerStart) workerStart();
-      workerLoop();
+      workerLoop(i);
     });
 }
 
@@ -210,6 +65,7 @@ ProgressiveRenderer::~ProgressiveRenderer() {
     if (current_) current_->cancelled = true;
   }
   wake_.notify_all();
+  resumeCancelled();
   for (std::thread& w : workers_) w.join();
 }
 
@@ -219,18 +75,67 @@ std::uint64_t ProgressiveRenderer::start(std::shared_ptr<const PreparedScene> sc
   std::lock_guard<std::mutex> lock(mutex_);
   if (current_) current_->cancelled = true;
   ++generation_;
-  current_ = std::make_shared<Job>(generation_, std::move(scene), camera, settings);
+  current_ = std::make_shared<Job>(generation_, std::move(scene), camera, settings, pool_);
   wake_.notify_all();
+  resumeCancelled();
   return generation_;
 }
 
 void ProgressiveRenderer::cancel() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (current_) current_->cancelled = true;
-  current_.reset();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (current_) current_->cancelled = true;
+    current_.reset();
+  }
+  resumeCancelled();
 }
 
-void ProgressiveRenderer::workerLoop() {
+void ProgressiveRenderer::pauseWorkers(int count) {
+  {
+    std::lock_guard<std::mutex> lock(pauseMutex_);
+    paused_.store(count, std::memory_order_relaxed);
+  }
+  resumed_.notify_all();
+}
+
+void ProgressiveRenderer::resumeCancelled() {
+  // Taking the lock orders the cancellation before a paused worker's check.
+  { std::lock_guard<std::mutex> lock(pauseMutex_); }
+  resumed_.notify_all();
+}
+
+bool ProgressiveRenderer::mayGoOn(const Job& job, int worker) {
+  if (worker < paused_.load(std::memory_order_relaxed) && waitingForWork_.load() == 0) {
+    std::unique_lock<std::mutex> lock(pauseMutex_);
+    resumed_.wait(lock, [&] {
+      return worker >= paused_.load(std::memory_order_relaxed) || waitingForWork_.load() > 0 ||
+             job.cancelled.load();
+    });
+  }
+  return !job.cancelled.load(std::memory_order_relaxed);
+}
+
+bool ProgressiveRenderer::waitFor(const Job& job, const std::function<bool()>& done) {
+  if (done()) return true;
+  // A worker still at it may be paused: it goes on while anyone waits.
+  {
+    std::lock_guard<std::mutex> lock(pauseMutex_);
+    ++waitingForWork_;
+  }
+  resumed_.notify_all();
+  bool ready = true;
+  while (!done()) {
+    if (job.cancelled.load(std::memory_order_relaxed)) {
+      ready = false;
+      break;
+    }
+    std::this_thread::yield();
+  }
+  --waitingForWork_;
+  return ready;
+}
+
+void ProgressiveRenderer::workerLoop(int worker) {
   std::uint64_t seen = 0;
   for (;;) {
     std::shared_ptr<Job> job;
@@ -241,12 +146,19 @@ void ProgressiveRenderer::workerLoop() {
       job = current_;
       seen = generation_;
     }
-    std::call_once(job->built, [&] {
-      job->integrator = std::make_unique<Integrator>(job->scene->intersector());
-    });
+    std::call_once(job->built, [&] { job->prepare(); });
     for (int item = job->nextItem++; item < job->itemCount; item = job->nextItem++) {
-      if (!job->run(item)) break;
+      const auto tileReady = [&](int t, int pass) {
+        return waitFor(*job, [&] { return job->tilePasses[t].load() >= pass; });
+      };
+      const auto goOn = [&] {
+        if (worker < paused_.load(std::memory_order_relaxed)) return mayGoOn(*job, worker);
+        return !job->cancelled.load(std::memory_order_relaxed);
+      };
+      if (!job->run(item, tileReady, goOn, passFinished_)) break;
     }
+    // The last items may be held by paused workers: they finish them now.
+    if (paused_.load() > 0) waitFor(*job, [&] { return job->finished(); });
   }
 }
 
@@ -270,7 +182,7 @@ ProgressiveStatus ProgressiveRenderer::status() const {
   s.finished = job->finished();
   s.running = !s.finished;
   s.samplesPerPixel = s.exactDone ? 1 + (done - job->levelCount()) : 0;
-  std::lock_guard<std::mutex> lock(job->mutex);
+  std::lock_guard<std::mutex> lock(job->statsMutex);
   s.firstCoarseMs = job->firstCoarseMs;
   s.exactMs = job->exactMs;
   s.finishedMs = job->finishedMs;
@@ -289,32 +201,38 @@ std::vector<int> ProgressiveRenderer::update(ProgressiveFrame& frame) const {
   std::vector<int> changed;
   if (!job) return changed;
   if (frame.job != job->id) {
-    frame = ProgressiveFrame{};
+    const std::size_t pixels = static_cast<std::size_t>(job->width) * job->height;
     frame.job = job->id;
     frame.width = job->width;
     frame.height = job->height;
     frame.tileSize = job->tile;
     frame.tilesX = job->tilesX;
     frame.tilesY = job->tilesY;
-    frame.rgba.assign(job->rgba.size(), 0);
-    if (job->settings.probes) frame.probes.assign(job->probes.size(), PixelProbe{});
+    frame.rgba.resize(job->settings.color ? pixels * 4 : 0);
+    frame.probes = {};
+    frame.probeStorage.reset();
     frame.tileStep.assign(job->tileCount, 0);
     frame.tileVersion.assign(job->tileCount, 0);
   }
-  std::lock_guard<std::mutex> lock(job->mutex);
   for (int t = 0; t < job->tileCount; ++t) {
-    if (frame.tileVersion[t] == job->tileVersion[t]) continue;
-    frame.tileVersion[t] = job->tileVersion[t];
+    if (frame.tileVersion[t] == job->tileVersion[t].load(std::memory_order_acquire)) continue;
+    std::lock_guard<std::mutex> lock(job->tileLock(t));
+    frame.tileVersion[t] = job->tileVersion[t].load(std::memory_order_relaxed);
     frame.tileStep[t] = job->tileStep[t];
     changed.push_back(t);
+    if (job->settings.probes && !frame.probeStorage) {
+      // Published probes never change again: the frame reads the job's.
+      frame.probeStorage = job->buffers;
+      frame.probes = job->buffers->probes;
+    }
+    if (frame.rgba.empty()) continue;
     const int c0 = (t % job->tilesX) * job->tile, r0 = (t / job->tilesX) * job->tile;
     const int c1 = std::min(c0 + job->tile, job->width);
     const int r1 = std::min(r0 + job->tile, job->height);
+    const std::vector<std::uint8_t>& rgba = job->buffers->rgba;
     for (int r = r0; r < r1; ++r) {
       const std::size_t a = job->index(c0, r), b = job->index(c1, r);
-      std::copy(job->rgba.begin() + a * 4, job->rgba.begin() + b * 4, frame.rgba.begin() + a * 4);
-      if (!frame.probes.empty())
-        std::copy(job->probes.begin() + a, job->probes.begin() + b, frame.probes.begin() + a);
+      std::copy(rgba.begin() + a * 4, rgba.begin() + b * 4, frame.rgba.begin() + a * 4);
     }
   }
   return changed;

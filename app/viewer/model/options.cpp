@@ -41,7 +41,12 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
   cli.add_flag("--hide-timings", o.hideTimings,
                "Show timing figures as '-' (for stable snapshots)");
   cli.add_flag("--stats", o.stats, "Print load, first image, exact image and frame times");
-  cli.add_flag("--frame-log", o.frameLog, "Print each frame's duration to stderr");
+  cli.add_flag("--frame-log", o.frameLog,
+               "Print each frame's duration, and when each render's images reach the texture, "
+               "to stderr");
+  cli.add_flag("--time-opening", o.timeOpening,
+               "Headless: open every listed scene in turn, as a drop would, and print the time "
+               "from opening to its first and its exact image in the texture");
   cli.add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for the render");
   try {
     cli.parse(argc, argv);
@@ -79,7 +84,9 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
       return fail("--shading expects MESH=FLAT|PHONG, got '" + s + "'");
     o.shading.emplace_back(s.substr(0, eq), mode);
   }
-  if (o.headless && o.snapshot.empty()) return fail("--headless needs --snapshot OUT.png");
+  if (o.headless && o.snapshot.empty() && !o.timeOpening)
+    return fail("--headless needs --snapshot OUT.png or --time-opening");
+  if (o.timeOpening && !o.headless) return fail("--time-opening needs --headless");
   exitCode = 0;
   return o;
 }

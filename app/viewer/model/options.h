@@ -31,6 +31,7 @@ struct ViewerOptions {
   bool hideTimings = false;       // timing figures as "-" (stable snapshots)
   bool stats = false;             // print timing figures on exit
   bool frameLog = false;          // print each frame's duration (UI and GL parts)
+  bool timeOpening = false;       // headless: open each listed scene in turn, print its times
   double timeoutSeconds = 600.0;  // headless: give up waiting for the render
 };
 

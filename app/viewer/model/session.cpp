@@ -45,6 +45,8 @@ void SceneSession::clear() {
 void SceneSession::setShading(std::size_t mesh, Shading shading) {
   if (meshes_[mesh].shading == shading) return;
   meshes_[mesh].shading = shading;
+  // The renderer may hold this very scene (see prepared()): change a copy.
+  if (scene_.use_count() > 1) scene_ = std::make_shared<Scene>(*scene_);
   scene_->meshes[mesh].setShading(shading);
   prepared_.reset();
   ++revision_;
@@ -89,14 +91,17 @@ void SceneSession::resetCamera() {
 std::shared_ptr<const PreparedScene> SceneSession::prepared(const TraceOptions& options) {
   if (!scene_) return nullptr;
   if (prepared_ && preparedOptions_.accel == options.accel) return prepared_;
-  // A copy, so the renderer's scene never changes under it.
-  auto render = std::make_shared<Scene>(*scene_);
-  render->meshes.clear();
   renderToScene_.clear();
-  for (std::uint32_t i = 0; i < scene_->meshes.size(); ++i) {
-    if (!meshes_[i].visible) continue;
-    render->meshes.push_back(scene_->meshes[i]);
-    renderToScene_.push_back(i);
+  for (std::uint32_t i = 0; i < scene_->meshes.size(); ++i)
+    if (meshes_[i].visible) renderToScene_.push_back(i);
+  // With every mesh shown, the renderer shares our scene (setShading copies
+  // it before changing it); else it gets a copy without the hidden meshes.
+  std::shared_ptr<const Scene> render = scene_;
+  if (renderToScene_.size() < scene_->meshes.size()) {
+    auto some = std::make_shared<Scene>(*scene_);
+    some->meshes.clear();
+    for (std::uint32_t i : renderToScene_) some->meshes.push_back(scene_->meshes[i]);
+    render = std::move(some);
   }
   prepared_ = std::make_shared<PreparedScene>(std::move(render), options);
   preparedOptions_ = options;

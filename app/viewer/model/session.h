@@ -1,7 +1,8 @@
 #pragma once
 // The scene being viewed and what the user changed about it: per-mesh
 // shading and visibility, and the camera. Hands the renderer an immutable
-// scene with the hidden meshes left out, rebuilt only when a mesh changes.
+// scene with the hidden meshes left out, rebuilt only when a mesh changes
+// (and shared with the session, not copied, while every mesh is shown).
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -30,7 +31,9 @@ class SceneSession {
   const std::string& error() const { return error_; }
   const std::filesystem::path& file() const { return file_; }
   double loadMs() const { return loadMs_; }
-  const Scene& scene() const { return *scene_; }  // every mesh, current modes
+  // Every mesh, current modes. A change of shading may replace it: do not
+  // hold on to it across one.
+  const Scene& scene() const { return *scene_; }
 
   const std::vector<MeshState>& meshes() const { return meshes_; }
   void setShading(std::size_t mesh, Shading shading);

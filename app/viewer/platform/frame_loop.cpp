@@ -3,29 +3,79 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <chrono>
+#include <thread>
+
 #include "../gl/gl_api.h"
 #include "../gl/offscreen_context.h"
+#include "../gl/texture.h"
 #include "../ui/panels.h"
 
 namespace meshtrace::viewer {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// However fast the input comes, no more presented frames than a display shows.
+constexpr auto kShortestFrame = std::chrono::microseconds(1000000 / 60);
+
+// The colour the translucent panels were drawn over, and what they made of it.
+constexpr float kBehindPanels[3] = {0.08f, 0.08f, 0.09f};
+float background[3] = {0.0f, 0.0f, 0.0f};
+}  // namespace
 
 void initImGui() {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui::StyleColorsDark();
+  // The panels cover the whole window: clearing it to their background
+  // colour and drawing them without one gives the same picture, and a
+  // software rasteriser fills the window once per frame instead of twice.
+  ImVec4& panel = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  const float panelRgb[3] = {panel.x, panel.y, panel.z};
+  for (int k = 0; k < 3; ++k)
+    background[k] = panelRgb[k] * panel.w + kBehindPanels[k] * (1.0f - panel.w);
+  panel.w = 0.0f;
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
 
 void warmUp(int width, int height) {
+  // A software rasteriser compiles code per texture and filter state on
+  // first use: draw an image texture as the image view does, magnified
+  // (nearest) and minified (linear), so that no first render pays for it.
+  gl::Texture image;
+  image.resize(64, 64);
+  const std::vector<std::uint8_t> grey(64 * 64 * 4, 128);
+  image.uploadAll(grey.data());
+  const auto id = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(image.id()));
   ImGui::GetIO().DisplaySize = ImVec2(float(width), float(height));
-  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplOpenGL3_NewFrame();  // creates the font texture
+  // Glyphs sit on whole pixels and every other shape samples one white
+  // texel (thick lines get their soft edges from geometry, not from the
+  // atlas): nearest sampling looks the same as the backend's linear
+  // filtering and costs a software rasteriser about a sixth less per frame.
+  ImGui::GetStyle().AntiAliasedLinesUseTex = false;
+  glBindTexture(GL_TEXTURE_2D,
+                static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID)));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   ImGui::NewFrame();
+  // As large as the window: the first frame to fill it is slow too.
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize);
   ImGui::Begin("warm-up");
   ImGui::TextUnformatted("-");
+  ImGui::Image(id, ImVec2(256, 256));
+  ImGui::Image(id, ImVec2(16, 16), ImVec2(0, 0), ImVec2(1, 1), ImVec4(1, 1, 1, 0.5f));
   ImGui::End();
   ImGui::Render();
   glViewport(0, 0, width, height);
+  glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glFinish();
 }
@@ -50,28 +100,70 @@ bool saveFramebuffer(ViewerApp& app, const std::string& path, int width, int hei
   }
 }
 
-double drawFrame(ViewerApp& app, int width, int height) {
-  const auto start = std::chrono::steady_clock::now();
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui::NewFrame();
-  app.frame();
-  ImGui::Render();
-  const auto built = std::chrono::steady_clock::now();
+void drawFrame(ViewerApp& app, int width, int height) {
   glViewport(0, 0, width, height);
-  glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+  glClearColor(background[0], background[1], background[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glFinish();
-  const auto end = std::chrono::steady_clock::now();
-  const double ms = std::chrono::duration<double, std::milli>(end - start).count();
-  if (app.state().options.frameLog)
-    std::fprintf(stderr, "frame %.1f ms: ui %.1f, gl %.1f\n", ms,
-                 std::chrono::duration<double, std::milli>(built - start).count(),
-                 std::chrono::duration<double, std::milli>(end - built).count());
   if (const std::string shot = app.takeScreenshotRequest(); !shot.empty())
     saveFramebuffer(app, shot, width, height);
-  app.frameDrawn(ms);
-  return ms;
+}
+
+namespace {
+// When a frame took its input, was built, drawn and shown.
+struct FrameMoments {
+  Clock::time_point input, built, drawn, end;
+};
+
+// --frame-log: each frame's parts, and once per render when its images
+// reached the texture.
+void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool rendering,
+              std::uint64_t& loggedJob) {
+  std::fprintf(stderr, "frame %.1f ms: ui %.1f, draw %.1f, present %.1f%s%s\n",
+               msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
+               msBetween(m.drawn, m.end), presented ? "" : ", not presented",
+               rendering ? ", while rendering" : "");
+  const ShownTimes& shown = app.display().shownTimes();
+  const ProgressiveStatus s = app.display().status();
+  if (shown.exactImageMs < 0 || s.job == loggedJob) return;
+  loggedJob = s.job;
+  std::fprintf(stderr,
+               "render %s: first image %.1f ms, exact image %.1f ms after asked for; "
+               "its first pass %.1f ms, exact pass %.1f ms after it started\n",
+               app.state().session.file().filename().c_str(), shown.firstImageMs,
+               shown.exactImageMs, s.firstCoarseMs, s.exactMs);
+}
+}  // namespace
+
+void runFrames(ViewerApp& app, const FrameHost& host) {
+  Clock::time_point lastInput = Clock::now() - std::chrono::seconds(1);
+  std::uint64_t loggedJob = 0;
+  bool presented = true;
+  while (host.keepRunning()) {
+    if (presented && !app.display().imageWaiting())
+      std::this_thread::sleep_until(lastInput + kShortestFrame);
+    host.waitForInput(app.waitBeforeNextFrameMs(lastInput));
+    FrameMoments m;
+    lastInput = m.input = Clock::now();
+    app.display().frameBegins();
+    const auto [width, height] = host.beginFrame();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    app.frame(m.input);
+    ImGui::Render();
+    m.built = m.drawn = Clock::now();
+    presented = app.shouldPresent();
+    if (presented) {
+      drawFrame(app, width, height);
+      m.drawn = Clock::now();
+      host.present();
+    }
+    app.display().frameEnds();
+    m.end = Clock::now();
+    const bool rendering = app.frameDone(msBetween(m.input, m.end));
+    if (app.state().options.frameLog) logFrame(app, m, presented, rendering, loggedJob);
+  }
 }
 
 }  // namespace meshtrace::viewer

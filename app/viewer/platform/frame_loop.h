@@ -1,8 +1,10 @@
 #pragma once
 // What both platforms do around the app each frame: set up Dear ImGui's
-// renderer, draw a frame, serve screenshot requests, pace and time frames.
-#include <chrono>
+// renderer, build and draw frames paced by the app, serve screenshot
+// requests and time the frames.
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "../ui/viewer_app.h"
 
@@ -16,12 +18,28 @@ void shutdownImGui();
 // compiled (slow in a software rasteriser) before any render competes.
 void warmUp(int width, int height);
 
-// Runs app.frame() between NewFrame and Render, draws it into the current
-// framebuffer (width x height) and serves a screenshot request. Returns the
-// frame's duration in ms (GL finished).
-double drawFrame(ViewerApp& app, int width, int height);
+// Draws the frame last built into the current framebuffer (width x height),
+// waits for GL to finish and serves a screenshot request.
+void drawFrame(ViewerApp& app, int width, int height);
 
 // Writes the current framebuffer to `path` as PNG; false (and a message) on failure.
 bool saveFramebuffer(ViewerApp& app, const std::string& path, int width, int height);
+
+// What a platform does for runFrames.
+struct FrameHost {
+  std::function<bool()> keepRunning;
+  // Waits up to `ms` for input or a wake-up (returning at once if one is
+  // pending) and hands the input to ImGui.
+  std::function<void(double ms)> waitForInput;
+  // Starts an ImGui frame on the platform's side; returns the framebuffer size.
+  std::function<std::pair<int, int>()> beginFrame;
+  std::function<void()> present;  // shows the drawn frame (swaps buffers)
+};
+
+// Runs frames until host.keepRunning() is false: waits as long as the app
+// allows (input, and the render reaching an image, end the wait), builds the
+// frame, draws and presents it unless the app says it is not worth it, and
+// reports its duration to the app.
+void runFrames(ViewerApp& app, const FrameHost& host);
 
 }  // namespace meshtrace::viewer

@@ -1,14 +1,57 @@
 // Headless: the whole window drawn offscreen through OSMesa, written as PNG
-// once the render (and its AA samples) is complete.
+// once the render (and its AA samples) is complete; or, with --time-opening,
+// every listed scene opened in turn and timed.
 #include <imgui.h>
 
-#include <thread>
+#include <condition_variable>
+#include <mutex>
 
 #include "../gl/offscreen_context.h"
 #include "frame_loop.h"
 #include "run.h"
 
 namespace meshtrace::viewer {
+
+namespace {
+// Ends the loop's wait when the render reaches an image, as an empty event
+// ends a window's.
+class Waker {
+ public:
+  void wake() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      pending_ = true;
+    }
+    woken_.notify_one();
+  }
+  void wait(double ms) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    woken_.wait_for(lock, std::chrono::duration<double, std::milli>(ms), [&] { return pending_; });
+    pending_ = false;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable woken_;
+  bool pending_ = false;
+};
+
+void printOpeningTimes(ViewerApp& app, const std::filesystem::path& scene) {
+  const ViewerState& state = app.state();
+  const ShownTimes& shown = app.display().shownTimes();
+  const FrameStats& frames = state.timing.renderingFrames;
+  if (!state.session.loaded()) {
+    std::printf("%-28s %s\n", scene.filename().string().c_str(), state.session.error().c_str());
+    return;
+  }
+  std::printf(
+      "%-28s load %6.1f ms  first image %6.1f ms  exact image %7.1f ms  "
+      "frames while rendering %3zu, longest %s, 99%% %s\n",
+      scene.filename().string().c_str(), state.timing.loadMs, shown.firstImageMs,
+      shown.exactImageMs, frames.count(), formatMs(frames.longest()).c_str(),
+      formatMs(frames.percentile(99.0)).c_str());
+}
+}  // namespace
 
 int runHeadless(const ViewerOptions& options, const std::filesystem::path& executable) {
   std::unique_ptr<gl::OffscreenContext> context;
@@ -25,27 +68,44 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
     io.DisplaySize = ImVec2(float(options.width), float(options.height));
     io.DeltaTime = 1.0f / 60.0f;
     warmUp(options.width, options.height);
-    ViewerApp app(options, executable);
-    const auto start = std::chrono::steady_clock::now();
+    Waker waker;
+    ViewerApp app(options, executable, [&] { waker.wake(); });
+    auto start = std::chrono::steady_clock::now();
     int settled = 0;
-    // Frames paced as a window would draw them (framePeriodMs), until the
-    // render is done and the layout has settled (a few frames).
-    while (settled < 3) {
-      const auto frameStart = std::chrono::steady_clock::now();
-      drawFrame(app, options.width, options.height);
-      settled = app.idle() ? settled + 1 : 0;
+    FrameHost host;
+    // Frames as a window would draw them, until the render is done and the
+    // layout has settled (a few frames).
+    host.keepRunning = [&] {
       if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
           options.timeoutSeconds) {
         std::fprintf(stderr, "error: the render did not finish within %.0f s\n",
                      options.timeoutSeconds);
         status = 1;
-        break;
+        return false;
       }
-      std::this_thread::sleep_until(frameStart +
-                                    std::chrono::microseconds(int(1000 * app.framePeriodMs())));
+      settled = app.idle() ? settled + 1 : 0;
+      return settled <= 3;
+    };
+    // No input arrives here: once idle, nothing is worth waiting for.
+    host.waitForInput = [&](double ms) {
+      if (!app.idle()) waker.wait(ms);
+    };
+    host.beginFrame = [&] { return std::make_pair(options.width, options.height); };
+    host.present = [] {};
+    if (options.timeOpening) {
+      for (const SceneFolder& folder : std::vector<SceneFolder>(app.state().folders))
+        for (const std::filesystem::path& scene : folder.scenes) {
+          app.drop({scene.string()});
+          start = std::chrono::steady_clock::now();
+          settled = 0;
+          runFrames(app, host);
+          printOpeningTimes(app, scene);
+        }
+    } else {
+      runFrames(app, host);
+      drawFrame(app, options.width, options.height);
+      if (!saveFramebuffer(app, options.snapshot, options.width, options.height)) status = 1;
     }
-    drawFrame(app, options.width, options.height);
-    if (!saveFramebuffer(app, options.snapshot, options.width, options.height)) status = 1;
     if (options.stats) app.printStats();
   }
   shutdownImGui();

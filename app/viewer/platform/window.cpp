@@ -4,9 +4,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
-#include <thread>
-
 #include "../gl/gl_api.h"
+#include "drop.h"
 #include "frame_loop.h"
 #include "run.h"
 
@@ -16,9 +15,7 @@ namespace {
 ViewerApp* dropTarget = nullptr;
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
-  if (!dropTarget) return;
-  std::vector<std::string> list(paths, paths + count);
-  dropTarget->drop(list);
+  if (dropTarget) dropPaths(*dropTarget, count, paths);
 }
 
 void* loadProc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
@@ -52,23 +49,26 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     int width, height;
     glfwGetFramebufferSize(window, &width, &height);
     warmUp(width, height);
-    ViewerApp app(options, executable);
+    // The render reaching its first or exact image posts an empty event,
+    // which ends the wait for input.
+    ViewerApp app(options, executable, [] { glfwPostEmptyEvent(); });
     dropTarget = &app;
     glfwSetDropCallback(window, onDrop);
-    while (!glfwWindowShouldClose(window)) {
-      const auto frameStart = std::chrono::steady_clock::now();
-      // Sleep in the event queue when nothing is rendering.
-      if (app.idle())
-        glfwWaitEventsTimeout(0.25);
+    FrameHost host;
+    host.keepRunning = [&] { return !glfwWindowShouldClose(window); };
+    host.waitForInput = [](double ms) {
+      if (ms > 0)
+        glfwWaitEventsTimeout(ms / 1000.0);
       else
         glfwPollEvents();
+    };
+    host.beginFrame = [&] {
       glfwGetFramebufferSize(window, &width, &height);
       ImGui_ImplGlfw_NewFrame();
-      drawFrame(app, width, height);
-      glfwSwapBuffers(window);
-      std::this_thread::sleep_until(frameStart +
-                                    std::chrono::microseconds(int(1000 * app.framePeriodMs())));
-    }
+      return std::make_pair(width, height);
+    };
+    host.present = [&] { glfwSwapBuffers(window); };
+    runFrames(app, host);
     if (options.stats) app.printStats();
     dropTarget = nullptr;
   }

@@ -1,5 +1,8 @@
+#include <imgui.h>
+
 #include <algorithm>
 
+#include "../model/camera_control.h"
 #include "../model/reference_lookup.h"
 #include "panels.h"
 
@@ -12,14 +15,13 @@ void setMessage(ViewerState& state, const std::string& message, bool error) {
 }
 
 void openScene(ViewerState& state, const std::filesystem::path& file) {
-  state.timing.openedAt = std::chrono::steady_clock::now();
-  state.timing.awaitingFirstJob = true;
+  state.timing.openedAt = state.timing.actionTime();
   state.session.load(file);
   state.hover.reset();
   state.pinned.reset();
   state.crosschecks.assign(state.session.meshes().size(), std::nullopt);
   state.timing.loadMs = state.session.loadMs();
-  state.timing.maxFrameMs = 0.0;
+  state.timing.renderingFrames.clear();
   state.timing.frames = 0;
   state.reference.path.clear();
   state.reference.image = Image8{};
@@ -55,6 +57,13 @@ void openPath(ViewerState& state, const std::filesystem::path& path) {
   } else {
     setMessage(state, "not a .sce file or a folder: " + path.string(), true);
   }
+}
+
+void copyCameraLine(ViewerState& state) {
+  if (!state.session.loaded()) return;
+  const std::string line = cameraLine(state.session.camera());
+  ImGui::SetClipboardText(line.c_str());
+  setMessage(state, "copied: " + line, false);
 }
 
 std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name) {

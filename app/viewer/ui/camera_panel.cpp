@@ -8,12 +8,9 @@ namespace meshtrace::viewer {
 
 void drawCameraPanel(ViewerState& state) {
   if (!state.session.loaded()) return;
-  std::string line = cameraLine(state.session.camera());
+  const std::string line = cameraLine(state.session.camera());
   ImGui::TextWrapped("%s", line.c_str());
-  if (ImGui::Button("Copy")) {
-    ImGui::SetClipboardText(line.c_str());
-    setMessage(state, "copied: " + line, false);
-  }
+  if (ImGui::Button("Copy")) copyCameraLine(state);
   ImGui::SameLine();
   if (ImGui::Button("Print")) std::printf("%s\n", line.c_str());
   ImGui::SameLine();

@@ -12,9 +12,11 @@ void drawObjectsPanel(ViewerState& state) {
     ImGui::TextDisabled("No scene loaded.");
     return;
   }
-  const Scene& scene = session.scene();
-  ImGui::Text("%zu spheres, %zu planes, %zu cylinders, %zu lights", scene.spheres.size(),
-              scene.planes.size(), scene.cylinders.size(), scene.lights.size());
+  {
+    const Scene& scene = session.scene();
+    ImGui::Text("%zu spheres, %zu planes, %zu cylinders, %zu lights", scene.spheres.size(),
+                scene.planes.size(), scene.cylinders.size(), scene.lights.size());
+  }
   if (session.meshes().empty()) {
     ImGui::TextDisabled("No meshes.");
     return;
@@ -42,8 +44,9 @@ void drawObjectsPanel(ViewerState& state) {
         session.setShading(i, m.shading == Shading::Flat ? Shading::Phong : Shading::Flat);
       if (changed) ImGui::PopStyleColor();
       ImGui::TableNextColumn();
-      ImGui::Text("%zu / %zu", scene.meshes[i].triangles().size(),
-                  scene.meshes[i].vertices().size());
+      // Asked for again: the toggle above may have replaced the scene.
+      const Mesh& mesh = session.scene().meshes[i];
+      ImGui::Text("%zu / %zu", mesh.triangles().size(), mesh.vertices().size());
       ImGui::PopID();
     }
     ImGui::EndTable();

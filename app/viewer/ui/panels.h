@@ -16,6 +16,9 @@ void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::
 // A path typed or dropped: a .sce opens, a folder joins the list.
 void openPath(ViewerState& state, const std::filesystem::path& path);
 void setMessage(ViewerState& state, const std::string& message, bool error);
+// Puts the camera's .sce line on the clipboard (the system's, through ImGui
+// in a window) and says so in the message line.
+void copyCameraLine(ViewerState& state);
 // A mesh named by the command line: its name (file stem) or index.
 std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name);
 // "mesh 'ring1' #0", "sphere #3": what a primitive is, for people.

@@ -3,7 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "meshtrace/inspect_colors.h"
+#include <thread>
 
 namespace meshtrace::viewer {
 
@@ -17,19 +17,36 @@ bool sameSettings(const RenderWish& a, const RenderWish& b) {
          a.trace.accel == b.trace.accel;
 }
 
-void putColor(std::uint8_t* out, const Color& c) {
-  for (int k = 0; k < 3; ++k) out[k] = toByte(c[k]);
-  out[3] = 255;
+// Colouring and uploading tiles may take this long per frame, so that a
+// frame stays well inside its budget when many tiles arrive at once.
+constexpr auto kTextureBudget = std::chrono::milliseconds(4);
+constexpr auto kRescaleEvery = std::chrono::milliseconds(250);
+
+FalseColorScales freshRanges() {
+  FalseColorScales s;
+  s.depthNear = -1.0;
+  s.depthFar = 0.0;
+  s.costMax = 1.0;
+  return s;
 }
 }  // namespace
 
-RenderDisplay::RenderDisplay(int threads, int workerNice)
-    : renderer_(threads, [workerNice] {
-        // Linux gives each thread its own nice value.
-        if (workerNice > 0) setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), workerNice);
-      }) {}
+RenderDisplay::RenderDisplay(int threads, int workerNice, std::function<void()> wake)
+    : renderer_(
+          threads,
+          [workerNice] {
+            // Linux gives each thread its own nice value.
+            if (workerNice > 0) setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), workerNice);
+          },
+          [wake = std::move(wake)](const PassFinished& pass) {
+            if (wake && (pass.coarse || pass.exact || pass.last)) wake();
+          }) {
+  const int cores = static_cast<int>(std::thread::hardware_concurrency());
+  coreForFrames_ = renderer_.threads() > 1 && renderer_.threads() >= cores ? 1 : 0;
+}
 
-bool RenderDisplay::sync(SceneSession& session, const RenderWish& wish) {
+bool RenderDisplay::sync(SceneSession& session, const RenderWish& wish,
+                         Clock::time_point requestedAt) {
   const bool changed = !started_ || session.revision() != revision_ || !sameSettings(wish, wish_);
   if (wish.view != wish_.view || wish.overlay != wish_.overlay) dirtyAll_ = true;
   wish_ = wish;
@@ -47,7 +64,8 @@ bool RenderDisplay::sync(SceneSession& session, const RenderWish& wish) {
   settings.probes = needsProbes(wish.view) || needsProbes(wish.overlay);
   settings.color = !needsProbes(wish.view) || wish.overlay != Overlay::None;
   renderer_.start(prepared_, camera_, settings);
-  dirtyAll_ = true;
+  requestedAt_ = requestedAt;
+  shown_ = ShownTimes{};
   return true;
 }
 
@@ -72,8 +90,31 @@ bool RenderDisplay::trackScales(const std::vector<int>& tiles) {
         scales_.depthFar = std::max(scales_.depthFar, double(p.depth));
       }
   }
-  return before.depthNear != scales_.depthNear || before.depthFar != scales_.depthFar ||
-         before.costMax != scales_.costMax;
+  const bool depth = wish_.view == View::Depth &&
+                     (before.depthNear != scales_.depthNear || before.depthFar != scales_.depthFar);
+  const bool cost = (wish_.view == View::BvhCost || wish_.overlay == Overlay::BvhCost) &&
+                    before.costMax != scales_.costMax;
+  return depth || cost;
+}
+
+void RenderDisplay::timeShownImages() {
+  if (shown_.exactImageMs >= 0 || frame_.tileStep.empty() || !textures_.current() ||
+      frame_.job != renderer_.status().job)
+    return;
+  bool allTraced = true, allExact = true;
+  for (int step : frame_.tileStep) {
+    allTraced = allTraced && step > 0;
+    allExact = allExact && step == 1;
+  }
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - requestedAt_).count();
+  if (allTraced && shown_.firstImageMs < 0) shown_.firstImageMs = ms;
+  if (allExact) shown_.exactImageMs = ms;
+}
+
+bool RenderDisplay::imageWaiting() const {
+  if (!prepared_) return false;
+  const ProgressiveStatus s = renderer_.status();
+  return (s.coarseDone && shown_.firstImageMs < 0) || (s.exactDone && shown_.exactImageMs < 0);
 }
 
 void RenderDisplay::update(const FalseColorScales& deviation) {
@@ -81,69 +122,31 @@ void RenderDisplay::update(const FalseColorScales& deviation) {
   const std::uint64_t oldJob = frame_.job;
   const std::vector<int> tiles = renderer_.update(frame_);
   if (frame_.job != oldJob) {
-    dirtyAll_ = true;
-    scales_ = FalseColorScales{};
-    scales_.depthNear = -1.0;
-    scales_.depthFar = 0.0;
-    scales_.costMax = 1.0;
+    // The texture still shows the last render; the new one replaces it tile
+    // by tile, with ranges measured afresh.
+    scales_ = freshRanges();
+    rescalePending_ = false;
   }
   if (frame_.width == 0) return;
   scales_.boxMax = std::max<double>(1.0, double(prepared_->scene().meshes.size()));
   scales_.meshDeviation = deviation.meshDeviation;
   scales_.deviationMax = deviation.deviationMax;
   scales_.scene = &prepared_->scene();
-  if (!frame_.probes.empty() && trackScales(tiles)) dirtyAll_ = true;
-  const std::size_t bytes = static_cast<std::size_t>(frame_.width) * frame_.height * 4;
-  if (viewRgba_.size() != bytes) {
-    viewRgba_.assign(bytes, 0);
-    overlayRgba_.assign(bytes, 0);
-    dirtyAll_ = true;
-  }
-  image_.resize(frame_.width, frame_.height);
-  if (wish_.overlay != Overlay::None) overlay_.resize(frame_.width, frame_.height);
+  textures_.fit(frame_, wish_.overlay != Overlay::None);
   if (dirtyAll_) {
     dirtyAll_ = false;
-    recolor(0, 0, frame_.width, frame_.height);
-    return;
+    textures_.markAll();
   }
-  if (tiles.empty()) return;
-  int c0 = frame_.width, r0 = frame_.height, c1 = 0, r1 = 0;
-  for (int t : tiles) {
-    const int tc = (t % frame_.tilesX) * frame_.tileSize,
-              tr = (t / frame_.tilesX) * frame_.tileSize;
-    c0 = std::min(c0, tc);
-    r0 = std::min(r0, tr);
-    c1 = std::max(c1, std::min(tc + frame_.tileSize, frame_.width));
-    r1 = std::max(r1, std::min(tr + frame_.tileSize, frame_.height));
+  textures_.markChanged(tiles);
+  if (!frame_.probes.empty() && trackScales(tiles)) rescalePending_ = true;
+  const Clock::time_point now = Clock::now();
+  if (rescalePending_ && (now - lastRescale_ >= kRescaleEvery || renderer_.status().exactDone)) {
+    rescalePending_ = false;
+    lastRescale_ = now;
+    textures_.markTraced(frame_);
   }
-  recolor(c0, r0, c1, r1);
-}
-
-void RenderDisplay::recolor(int c0, int r0, int c1, int r1) {
-  const bool probeView = needsProbes(wish_.view);
-  const bool withOverlay = wish_.overlay != Overlay::None && !frame_.probes.empty();
-  if (probeView || withOverlay) {
-    for (int r = r0; r < r1; ++r) {
-      for (int c = c0; c < c1; ++c) {
-        const std::size_t i = (static_cast<std::size_t>(r) * frame_.width + c) * 4;
-        const PixelProbe* p = frame_.probeAt(c, r);
-        if (probeView) {
-          if (p)
-            putColor(&viewRgba_[i], falseColor(wish_.view, *p, scales_));
-          else
-            viewRgba_[i + 3] = 0;
-        }
-        if (withOverlay) {
-          if (p)
-            putColor(&overlayRgba_[i], heatColor(overlayValue(wish_.overlay, *p, scales_)));
-          else
-            overlayRgba_[i + 3] = 0;
-        }
-      }
-    }
-  }
-  image_.upload(probeView ? viewRgba_.data() : frame_.rgba.data(), c0, r0, c1, r1);
-  if (withOverlay) overlay_.upload(overlayRgba_.data(), c0, r0, c1, r1);
+  textures_.refresh(frame_, wish_.view, wish_.overlay, scales_, kTextureBudget);
+  timeShownImages();
 }
 
 Image8 RenderDisplay::colorImage() const {
@@ -151,8 +154,10 @@ Image8 RenderDisplay::colorImage() const {
   out.width = frame_.width;
   out.height = frame_.height;
   out.rgb.resize(static_cast<std::size_t>(out.width) * out.height * 3);
-  for (std::size_t i = 0, n = out.rgb.size() / 3; i < n && !frame_.rgba.empty(); ++i)
-    for (int k = 0; k < 3; ++k) out.rgb[i * 3 + k] = frame_.rgba[i * 4 + k];
+  for (int row = 0; row < out.height; ++row)
+    for (int col = 0; col < out.width; ++col)
+      if (const std::uint8_t* rgba = frame_.rgbaAt(col, row))
+        std::copy(rgba, rgba + 3, &out.rgb[(static_cast<std::size_t>(row) * out.width + col) * 3]);
   return out;
 }
 

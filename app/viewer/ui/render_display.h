@@ -1,8 +1,10 @@
 #pragma once
 // The progressive render as the viewer shows it: starts and restarts the
 // background render when the scene, camera or view settings change, pulls
-// the finished tiles every frame, turns probes into false colours and keeps
-// the textures current.
+// the finished tiles every frame into the textures (view_textures.h), tracks
+// the ranges of the false colours and times when the images are shown.
+#include <chrono>
+#include <functional>
 #include <memory>
 
 #include "../gl/texture.h"
@@ -10,6 +12,7 @@
 #include "../model/views.h"
 #include "meshtrace/image.h"
 #include "meshtrace/progressive.h"
+#include "view_textures.h"
 
 namespace meshtrace::viewer {
 
@@ -20,26 +23,50 @@ struct RenderWish {
   TraceOptions trace;
 };
 
+// How long after the user asked for the current render (opened the scene,
+// moved the camera, ...) its images reached the texture; -1 until they did.
+struct ShownTimes {
+  double firstImageMs = -1.0;  // every tile holds at least the coarse pass
+  double exactImageMs = -1.0;  // every pixel traced exactly
+};
+
 class RenderDisplay {
  public:
+  using Clock = std::chrono::steady_clock;
+
   // `workerNice` > 0 lowers the render threads' priority below the UI
-  // thread's: smoother frames on a busy machine, a slower render.
-  RenderDisplay(int threads, int workerNice);
+  // thread's: smoother frames on a busy machine, a slower render. `wake`
+  // runs on a render thread when the first image, the exact image or the
+  // whole render is done; the passes between show with the next frame.
+  RenderDisplay(int threads, int workerNice, std::function<void()> wake = {});
 
   // Starts a new render if the session or the wish changed since the last
-  // call; returns true if it did.
-  bool sync(SceneSession& session, const RenderWish& wish);
+  // call; returns true if it did. `requestedAt`: when the user asked for
+  // what changed, the start of the figures in shownTimes().
+  bool sync(SceneSession& session, const RenderWish& wish, Clock::time_point requestedAt);
   void stop();
-  // Pulls finished tiles and updates the textures; `scales` supplies the
+  // While the UI thread builds and draws a frame, one render thread waits
+  // (when the threads fill the cores): the frame gets a core of its own
+  // instead of a third of two.
+  void frameBegins() { renderer_.pauseWorkers(coreForFrames_); }
+  void frameEnds() { renderer_.pauseWorkers(0); }
+  // Pulls finished tiles and updates the textures, within a few ms (what
+  // does not fit waits for the next call); `deviation` supplies the
   // deviation data (the depth and cost ranges are tracked here).
   void update(const FalseColorScales& deviation);
   // Recolour everything on the next update (e.g. new deviation data).
   void invalidate() { dirtyAll_ = true; }
 
-  const gl::Texture& image() const { return image_; }
-  const gl::Texture& overlay() const { return overlay_; }
+  const gl::Texture& image() const { return textures_.image(); }
+  const gl::Texture& overlay() const { return textures_.overlay(); }
   const ProgressiveFrame& frame() const { return frame_; }
   ProgressiveStatus status() const { return renderer_.status(); }
+  const ShownTimes& shownTimes() const { return shown_; }
+  // A render runs whose coarse pass has not reached the texture yet.
+  bool awaitingFirstImage() const { return prepared_ && shown_.firstImageMs < 0; }
+  // The render has reached its first or its exact image, and the texture
+  // not yet: worth a frame at once.
+  bool imageWaiting() const;
   bool active() const { return prepared_ != nullptr; }
   const std::shared_ptr<const PreparedScene>& prepared() const { return prepared_; }
   const Camera& camera() const { return camera_; }
@@ -52,20 +79,28 @@ class RenderDisplay {
   Image8 colorImage() const;
 
  private:
-  void recolor(int c0, int r0, int c1, int r1);
+  // Widens the depth and cost ranges by `tiles`; true if the current view
+  // or overlay colours by a range that changed.
   bool trackScales(const std::vector<int>& tiles);
+  void timeShownImages();
 
   ProgressiveRenderer renderer_;
+  int coreForFrames_ = 0;  // workers paused during a frame
   ProgressiveFrame frame_;
   std::shared_ptr<const PreparedScene> prepared_;
   Camera camera_;
   std::uint64_t revision_ = ~0ull;
   RenderWish wish_;
+  Clock::time_point requestedAt_;
+  ShownTimes shown_;
   bool started_ = false;
   bool dirtyAll_ = true;
   FalseColorScales scales_;
-  std::vector<std::uint8_t> viewRgba_, overlayRgba_;
-  gl::Texture image_, overlay_;
+  // The ranges changed since the traced tiles were coloured: recolour them
+  // all, at most every kRescaleEvery while the render runs.
+  bool rescalePending_ = false;
+  Clock::time_point lastRescale_{};
+  ViewTextures textures_;
 };
 
 }  // namespace meshtrace::viewer

@@ -10,10 +10,11 @@ namespace meshtrace::viewer {
 namespace {
 std::string ms(const ViewerState& state, double v) {
   if (state.options.hideTimings) return "-";
-  if (v < 0) return "...";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f ms", v);
-  return buf;
+  return v < 0 ? "..." : formatMs(v);
+}
+
+std::string ms(const ViewerState& state, std::optional<double> v) {
+  return state.options.hideTimings ? "-" : formatMs(v);
 }
 }  // namespace
 
@@ -40,10 +41,15 @@ void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
       ImGui::Text("  rays/s -");
     else
       ImGui::Text("  %.2f M rays/s", seconds > 0 ? rays / seconds / 1e6 : 0.0);
+    // Shown times count from the user's action (opening the scene, a
+    // change), not from the render's start: what the user waits.
+    const ShownTimes& shown = display.shownTimes();
     ImGui::Text("load %s  first image %s  exact %s", ms(state, state.timing.loadMs).c_str(),
-                ms(state, s.firstCoarseMs).c_str(), ms(state, s.exactMs).c_str());
-    ImGui::Text("%d threads  %llu rays  longest frame %s", display.threads(),
-                static_cast<unsigned long long>(rays), ms(state, state.timing.maxFrameMs).c_str());
+                ms(state, shown.firstImageMs).c_str(), ms(state, shown.exactImageMs).c_str());
+    const FrameStats& frames = state.timing.renderingFrames;
+    ImGui::Text("%d threads  %llu rays", display.threads(), static_cast<unsigned long long>(rays));
+    ImGui::Text("frames while rendering: longest %s  99%% %s", ms(state, frames.longest()).c_str(),
+                ms(state, frames.percentile(99.0)).c_str());
   }
   ImGui::SetNextItemWidth(200);
   if (ImGui::BeginCombo("view", label(state.view))) {

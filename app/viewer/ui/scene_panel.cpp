@@ -8,21 +8,25 @@ namespace meshtrace::viewer {
 
 namespace {
 void drawFolderBrowser(ViewerState& state) {
-  namespace fs = std::filesystem;
-  if (state.browseDir.empty()) state.browseDir = fs::current_path().string();
-  ImGui::TextWrapped("%s", state.browseDir.c_str());
+  FolderBrowser& browser = *state.browser;
+  ImGui::TextWrapped("%s", browser.folder().c_str());
   if (ImGui::Button("Add this folder")) {
-    addFolder(state, state.browseDir, fs::path(state.browseDir).filename().string());
-    state.browsing = false;
+    addFolder(state, browser.folder(), browser.folder().filename().string());
+    state.browser.reset();
+    return;
   }
   ImGui::SameLine();
-  if (ImGui::Button("Close")) state.browsing = false;
-  ImGui::BeginChild("browser", ImVec2(0, 140), true);
-  if (ImGui::Selectable("..")) state.browseDir = fs::path(state.browseDir).parent_path().string();
-  for (const fs::path& dir : subfolders(state.browseDir)) {
-    if (ImGui::Selectable((dir.filename().string() + "/").c_str())) state.browseDir = dir.string();
+  if (ImGui::Button("Close")) {
+    state.browser.reset();
+    return;
   }
+  ImGui::BeginChild("browser", ImVec2(0, 140), true);
+  std::optional<std::size_t> chosen;
+  for (std::size_t i = 0; i < browser.entries().size(); ++i)
+    if (ImGui::Selectable(browser.entries()[i].label.c_str())) chosen = i;
   ImGui::EndChild();
+  // Moving changes the entries: only after the loop over them.
+  if (chosen) browser.enter(*chosen);
 }
 }  // namespace
 
@@ -33,9 +37,13 @@ void drawScenePanel(ViewerState& state) {
   ImGui::SameLine();
   if ((ImGui::Button("Open") || entered) && !state.pathField.empty())
     openPath(state, state.pathField);
-  if (ImGui::Button(state.browsing ? "Hide folder browser" : "Browse folders..."))
-    state.browsing = !state.browsing;
-  if (state.browsing) drawFolderBrowser(state);
+  if (ImGui::Button(state.browser ? "Hide folder browser" : "Browse folders...")) {
+    if (state.browser)
+      state.browser.reset();
+    else
+      state.browser.emplace();
+  }
+  if (state.browser) drawFolderBrowser(state);
   ImGui::TextDisabled("Drop a .sce file or a folder on the window to open it.");
   for (SceneFolder& folder : state.folders) {
     ImGui::PushID(folder.root.string().c_str());

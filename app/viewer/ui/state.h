@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "../gl/texture.h"
+#include "../model/folder_browser.h"
+#include "../model/frame_stats.h"
 #include "../model/options.h"
 #include "../model/scene_catalog.h"
 #include "../model/session.h"
@@ -40,14 +42,16 @@ struct ReferenceState {
 };
 
 struct TimingStats {
-  std::chrono::steady_clock::time_point openedAt;  // when the scene was asked for
-  bool awaitingFirstJob = false;
-  double openToRenderStartMs = -1.0;  // from opening (load included) to its render starting
+  using Clock = std::chrono::steady_clock;
+  // When the input of the frame being built was taken: what the user does in
+  // it was asked for then. Unset between frames (a drop arrives there).
+  std::optional<Clock::time_point> frameInputAt;
+  std::optional<Clock::time_point> openedAt;  // a scene was opened, its render not started yet
   double loadMs = 0.0;
-  double maxFrameMs = 0.0;  // while rendering, after the first frames of a job
-  double lastFrameMs = 0.0;
-  std::vector<float> frameHistory;
+  FrameStats renderingFrames;  // frames drawn while a render ran, since the scene was opened
   int frames = 0;
+
+  Clock::time_point actionTime() const { return frameInputAt.value_or(Clock::now()); }
 };
 
 struct ViewerState {
@@ -56,8 +60,7 @@ struct ViewerState {
   SceneSession session;
   std::vector<SceneFolder> folders;
   std::string pathField;
-  std::string browseDir;
-  bool browsing = false;
+  std::optional<FolderBrowser> browser;  // open while shown
 
   View view = View::Color;
   Overlay overlay = Overlay::None;

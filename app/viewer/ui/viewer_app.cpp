@@ -29,10 +29,15 @@ bool section(const char* title, bool open) {
   ImGui::SetNextItemOpen(open, ImGuiCond_Once);
   return ImGui::CollapsingHeader(title);
 }
+
+double msSince(ViewerApp::Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(ViewerApp::Clock::now() - t).count();
+}
 }  // namespace
 
-ViewerApp::ViewerApp(const ViewerOptions& options, const std::filesystem::path& executable)
-    : display_(options.threads, options.workerNice) {
+ViewerApp::ViewerApp(const ViewerOptions& options, const std::filesystem::path& executable,
+                     std::function<void()> wake)
+    : display_(options.threads, options.workerNice, std::move(wake)) {
   state_.options = options;
   state_.executable = executable;
   applyOptions();
@@ -88,22 +93,25 @@ RenderWish ViewerApp::wish() const {
 }
 
 void ViewerApp::sync() {
-  if (!display_.sync(state_.session, wish())) return;
-  jobFrames_ = 0;
   TimingStats& t = state_.timing;
-  if (t.awaitingFirstJob) {
-    t.awaitingFirstJob = false;
-    t.openToRenderStartMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t.openedAt)
-            .count();
-  }
+  // The render of a scene just opened was asked for when it was opened,
+  // before its load; any other render, by this frame's input.
+  const Clock::time_point requestedAt = t.openedAt.value_or(t.actionTime());
+  const bool started = display_.sync(state_.session, wish(), requestedAt);
+  if (started) openingJobAt_.reset();
+  if (started && t.openedAt) openingJobAt_ = t.openedAt;
+  if (started || !state_.session.loaded()) t.openedAt.reset();
 }
 
-void ViewerApp::frame() {
+void ViewerApp::frame(Clock::time_point inputAt) {
+  state_.timing.frameInputAt = inputAt;
+  renderingAtFrameStart_ = display_.status().running;
   const ImGuiIO& io = ImGui::GetIO();
   if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 ||
       ImGui::IsAnyMouseDown() || io.InputQueueCharacters.Size > 0 || ImGui::IsAnyItemActive())
-    lastInteraction_ = std::chrono::steady_clock::now();
+    framesSinceInput_ = 0;
+  else
+    ++framesSinceInput_;
   sync();
   if (state_.view == View::NormalDeviation && state_.session.loaded() &&
       !state_.session.meshes().empty() && (state_.crosschecks.empty() || !state_.crosschecks[0])) {
@@ -152,21 +160,23 @@ void ViewerApp::frame() {
   ImGui::End();
   // A change made in this frame restarts the render now, not next frame.
   sync();
+  state_.timing.frameInputAt.reset();
 }
 
-void ViewerApp::frameDrawn(double ms) {
+bool ViewerApp::waitingForOpeningImage() const {
+  return openingJobAt_ && display_.awaitingFirstImage() && msSince(*openingJobAt_) < kOpeningWaitMs;
+}
+
+bool ViewerApp::shouldPresent() const { return !waitingForOpeningImage(); }
+
+bool ViewerApp::frameDone(double ms) {
   TimingStats& t = state_.timing;
-  t.lastFrameMs = ms;
   ++t.frames;
-  t.frameHistory.push_back(static_cast<float>(ms));
-  if (t.frameHistory.size() > 240) t.frameHistory.erase(t.frameHistory.begin());
-  const ProgressiveStatus s = display_.status();
-  if (s.job != timedJob_) {
-    timedJob_ = s.job;
-    jobFrames_ = 0;
-  }
-  // The frame that loaded a scene pays for the load; it is timed apart (load).
-  if (s.running && ++jobFrames_ > 1) t.maxFrameMs = std::max(t.maxFrameMs, ms);
+  // A frame counts as drawn while rendering when a render ran at its start
+  // or at its end (one it started: opening a scene, moving the camera).
+  const bool rendering = renderingAtFrameStart_ || display_.status().running;
+  if (rendering) t.renderingFrames.add(ms);
+  return rendering;
 }
 
 void ViewerApp::drop(const std::vector<std::string>& paths) {
@@ -179,11 +189,17 @@ bool ViewerApp::idle() const {
   return s.finished && display_.frame().job == s.job;
 }
 
-double ViewerApp::framePeriodMs() const {
-  const double sinceInput =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lastInteraction_)
-          .count();
-  return sinceInput < 1000.0 ? 1000.0 / 60.0 : 1000.0 / 15.0;
+double ViewerApp::waitBeforeNextFrameMs(Clock::time_point lastFrameInput) const {
+  if (display_.imageWaiting()) return 0.0;
+  if (waitingForOpeningImage()) return std::max(0.0, kOpeningWaitMs - msSince(*openingJobAt_));
+  double ms = 1000.0 / 10.0;
+  // Input itself ends the wait; these frames serve what follows input
+  // without more of it (a button's release, a menu closing): a few suffice.
+  if (framesSinceInput_ < kFramesAfterInput)
+    ms = 1000.0 / 60.0;
+  else if (idle())
+    ms = 250.0;
+  return std::max(0.0, ms - msSince(lastFrameInput));
 }
 
 std::string ViewerApp::takeScreenshotRequest() {
@@ -194,13 +210,17 @@ std::string ViewerApp::takeScreenshotRequest() {
 
 void ViewerApp::printStats() const {
   const ProgressiveStatus s = display_.status();
+  const ShownTimes& shown = display_.shownTimes();
+  const FrameStats& frames = state_.timing.renderingFrames;
   std::printf(
-      "load %.1f ms, first coarse image %.1f ms after the render started (%.1f ms after opening), "
-      "exact image %.1f ms, finished %.1f ms, %d threads\n",
-      state_.timing.loadMs, s.firstCoarseMs, state_.timing.openToRenderStartMs + s.firstCoarseMs,
-      s.exactMs, s.finishedMs, display_.threads());
-  std::printf("frames %d, longest frame while rendering %.1f ms\n", state_.timing.frames,
-              state_.timing.maxFrameMs);
+      "load %.1f ms; from opening the scene (or the last change) to the texture: first image "
+      "%.1f ms, exact image %.1f ms; the render's own first pass %.1f ms, exact %.1f ms, finished "
+      "%.1f ms; %d threads\n",
+      state_.timing.loadMs, shown.firstImageMs, shown.exactImageMs, s.firstCoarseMs, s.exactMs,
+      s.finishedMs, display_.threads());
+  std::printf("frames %d, while rendering %zu: longest %s, 99th percentile %s\n",
+              state_.timing.frames, frames.count(), formatMs(frames.longest()).c_str(),
+              formatMs(frames.percentile(99.0)).c_str());
 }
 
 }  // namespace meshtrace::viewer

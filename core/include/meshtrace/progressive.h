@@ -15,6 +15,8 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -61,25 +63,44 @@ struct ProgressiveStatus {
   Counters counters;                                               // work of the published tiles
 };
 
-// The viewer's copy of a job's image: colours as RGBA8, probes, and per tile
-// the block size its contents stand for (1 once exact).
+// What a pass that just completed brings: the first (coarse) image, the
+// exact one, the end of the job.
+struct PassFinished {
+  int pass = 0;
+  bool coarse = false, exact = false, last = false;
+};
+
+// The viewer's copy of a job's image: colours as RGBA8 (when the job traces
+// colours), the job's probes (when it records them) and per tile the step
+// of the last pass that reached it (1 once exact). Both hold a pixel only
+// where a pass traced it: at multiples of its tile's step, each standing
+// for the step x step block it is the corner of (probeAt and rgbaAt).
 struct ProgressiveFrame {
   std::uint64_t job = 0;
   int width = 0, height = 0, tileSize = 0, tilesX = 0, tilesY = 0;
-  std::vector<std::uint8_t> rgba;  // row 0 at the top, alpha 255 where traced
-  std::vector<PixelProbe> probes;  // valid at multiples of the tile's step
-  std::vector<int> tileStep;       // 0 while a tile has nothing yet
+  std::vector<std::uint8_t> rgba;            // row 0 at the top
+  std::span<const PixelProbe> probes;        // the job's own
+  std::shared_ptr<const void> probeStorage;  // keeps `probes` alive
+  std::vector<int> tileStep;                 // 0 while a tile has nothing yet
   std::vector<std::uint32_t> tileVersion;
 
-  // The probe that stands for storage pixel (col, row) at its tile's step.
+  // What stands for storage pixel (col, row) at its tile's step; null
+  // where nothing was traced yet.
   const PixelProbe* probeAt(int col, int row) const;
+  const std::uint8_t* rgbaAt(int col, int row) const;
+  // The index of that pixel.
+  std::optional<std::size_t> cornerOf(int col, int row) const;
 };
 
 class ProgressiveRenderer {
  public:
   // threads = 0: one worker per core. `workerStart` runs first on each
   // worker thread (a viewer lowers their priority there, to keep drawing).
-  explicit ProgressiveRenderer(int threads = 0, std::function<void()> workerStart = {});
+  // `passFinished` runs on the worker that completes a pass of a job, so a
+  // viewer waiting for events can wake and show it at once; it must be
+  // quick and must not call back into the renderer.
+  explicit ProgressiveRenderer(int threads = 0, std::function<void()> workerStart = {},
+                               std::function<void(const PassFinished&)> passFinished = {});
   ~ProgressiveRenderer();
   ProgressiveRenderer(const ProgressiveRenderer&) = delete;
   ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
@@ -89,6 +110,11 @@ class ProgressiveRenderer {
   std::uint64_t start(std::shared_ptr<const PreparedScene> scene, const Camera& camera,
                       const ProgressiveSettings& settings);
   void cancel();
+  // Until called again with a smaller count, workers 0 .. count-1 wait
+  // between pixels (except while another worker needs the tile they hold):
+  // a viewer lends itself a core for the time it draws a frame, without
+  // lowering the render's priority against other programs.
+  void pauseWorkers(int count);
 
   ProgressiveStatus status() const;
   // Brings `frame` up to date with the current job (resizing it for a new
@@ -100,15 +126,29 @@ class ProgressiveRenderer {
   int threads() const { return static_cast<int>(workers_.size()); }
 
   struct Job;
+  struct Buffers;
+  class BufferPool;
 
  private:
-  void workerLoop();
+  void workerLoop(int worker);
+  // Between pixels: waits while `worker` is paused; false once `job` is cancelled.
+  bool mayGoOn(const Job& job, int worker);
+  // Until done() (part of `job` that other workers hold); false if the job
+  // is cancelled first.
+  bool waitFor(const Job& job, const std::function<bool()>& done);
+  void resumeCancelled();
 
+  std::function<void(const PassFinished&)> passFinished_;
+  std::shared_ptr<BufferPool> pool_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::shared_ptr<Job> current_;
   std::uint64_t generation_ = 0;
   bool stopping_ = false;
+  std::mutex pauseMutex_;
+  std::condition_variable resumed_;
+  alignas(64) std::atomic<int> paused_{0};          // read between pixels: a line of its own
+  alignas(64) std::atomic<int> waitingForWork_{0};  // workers waiting for work others hold
   std::vector<std::thread> workers_;
 };
 
