@@ -1,17 +1,31 @@
 // Closest-hit and any-hit queries through the scene's two-level BVH.
-
 #include "meshtrace/scene_bvh.h"
 #include "primitive_query.h"
 
 namespace meshtrace {
 
 namespace {
+
 // Set bits of a 4-bit lane mask (std::popcount is a library call without
 // the popcnt instruction of later x86-64 levels).
 int laneCount(int mask) {
   static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
   return kCount[mask & 15];
 }
+
+// Calls exact(triangle) for each triangle of the block that the float filter
+// passes on, until one call returns true. Every lane counts as one triangle
+// test: those dropped here, the others in the exact test.
+template <typename Exact>
+bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
+                      double tMin, double tMax, Counters& counters, Exact&& exact) {
+  int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
+  counters.triangleTests += n - laneCount(mask);
+  for (; mask; mask &= mask - 1)
+    if (exact(block.id[__builtin_ctz(static_cast<unsigned>(mask))])) return true;
+  return false;
+}
+
 }  // namespace
 
 BoxRay4 SceneBvh::boxRay(const PrimitiveQuery& query) const {
@@ -42,12 +56,11 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
       const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
       traverseClosest(bvh.tree, ray, tMin, closest.t(), visits,
                       [&](std::uint32_t block, std::uint32_t n) {
-                        const TriangleBlock4& b = bvh.blocks[block];
-                        int mask = blockRay.candidates(b, static_cast<int>(n), tMin, closest.t());
-                        counters.triangleTests += n - laneCount(mask);
-                        for (; mask; mask &= mask - 1)
-                          query.offerTriangle(o.index, b.id[std::countr_zero(static_cast<unsigned>(mask))],
-                                              closest);
+                        forEachCandidate(blockRay, bvh.blocks[block], n, tMin, closest.t(),
+                                         counters, [&](std::uint32_t tri) {
+                                           query.offerTriangle(o.index, tri, closest);
+                                           return false;
+                                         });
                       });
     }
   });
@@ -79,14 +92,10 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
           const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
           const bool hit = traverseAny(
               bvh.tree, ray, tMin, tMax, visits, [&](std::uint32_t block, std::uint32_t n) {
-                const TriangleBlock4& b = bvh.blocks[block];
-                int mask = blockRay.candidates(b, static_cast<int>(n), tMin, tMax);
-                counters.triangleTests += n - laneCount(mask);
-                for (; mask; mask &= mask - 1)
-                  if (query.triangleBlocks(
-                          o.index, b.id[std::countr_zero(static_cast<unsigned>(mask))], tMax))
-                    return true;
-                return false;
+                return forEachCandidate(blockRay, bvh.blocks[block], n, tMin, tMax, counters,
+                                        [&](std::uint32_t tri) {
+                                          return query.triangleBlocks(o.index, tri, tMax);
+                                        });
               });
           if (hit) return true;
         }
