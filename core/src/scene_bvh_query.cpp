@@ -1,4 +1,7 @@
 // Closest-hit and any-hit queries through the scene's two-level BVH.
+#include <new>
+#include <type_traits>
+
 #include "meshtrace/scene_bvh.h"
 #include "primitive_query.h"
 
@@ -25,6 +28,31 @@ bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uin
     if (exact(block.id[__builtin_ctz(static_cast<unsigned>(mask))])) return true;
   return false;
 }
+
+// A mesh's BlockRay, made when the ray first reaches one of its blocks: most
+// rays that miss a mesh never do. (std::optional is not used because GCC
+// zero-fills its storage up front with `rep stos`, which costs more than
+// the set-up itself.)
+class LazyBlockRay {
+ public:
+  LazyBlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel)
+      : ray_(ray), frame_(frame), kernel_(kernel) {}
+  const BlockRay& get() {
+    if (!made_) {
+      new (storage_) BlockRay(ray_, frame_, kernel_);
+      made_ = true;
+    }
+    return *std::launder(reinterpret_cast<const BlockRay*>(storage_));
+  }
+
+ private:
+  static_assert(std::is_trivially_destructible_v<BlockRay>);
+  const Ray& ray_;
+  const BlockFrame& frame_;
+  TriangleKernel kernel_;
+  bool made_ = false;
+  alignas(BlockRay) unsigned char storage_[sizeof(BlockRay)];
+};
 
 }  // namespace
 
@@ -53,10 +81,10 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
         for (std::uint32_t t = 0; t < count; ++t) query.offerTriangle(o.index, t, closest);
         continue;
       }
-      const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+      LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
       traverseClosest(bvh.tree, ray, tMin, closest.t(), visits,
                       [&](std::uint32_t block, std::uint32_t n) {
-                        forEachCandidate(blockRay, bvh.blocks[block], n, tMin, closest.t(),
+                        forEachCandidate(blockRay.get(), bvh.blocks[block], n, tMin, closest.t(),
                                          counters, [&](std::uint32_t tri) {
                                            query.offerTriangle(o.index, tri, closest);
                                            return false;
@@ -89,10 +117,10 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
               if (query.triangleBlocks(o.index, t, tMax)) return true;
             continue;
           }
-          const BlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+          LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
           const bool hit = traverseAny(
               bvh.tree, ray, tMin, tMax, visits, [&](std::uint32_t block, std::uint32_t n) {
-                return forEachCandidate(blockRay, bvh.blocks[block], n, tMin, tMax, counters,
+                return forEachCandidate(blockRay.get(), bvh.blocks[block], n, tMin, tMax, counters,
                                         [&](std::uint32_t tri) {
                                           return query.triangleBlocks(o.index, tri, tMax);
                                         });

@@ -17,34 +17,48 @@ namespace meshtrace {
 
 // The ray prepared for float slab tests that stay conservative: every box is
 // tested as if widened by pad.absolute, with the distances scaled by
-// 1 -/+ pad.relative (bvh_ray.h), whatever the float rounding does.
+// 1 -/+ pad.relative (bvh_ray.h), whatever the float rounding does. The
+// set-up runs in float on all three axes at once (u = 2^-24 below):
 // - The origin is moved toward the far plane for the near distance (and the
-//   other way for the far one) by the padding plus 2^-22 |o|, four times the
-//   rounding error of converting it to float, so the float origin is still
-//   on the widened side.
-// - The reciprocals are scaled by a further 2^-20, which covers the three
-//   float roundings (subtraction, reciprocal, product; 3 * 2^-24 < 2^-20).
+//   other way for the far one) by shift = a + 2^-21 |o|, a = pad.absolute
+//   (1 + 2^-20) rounded to float (2^-21 |o| is exact, a power of two).
+//   Converting o and a, adding to form shift and adding it to o lose at most
+//   2u |o| + 3u a; the 8u |o| and 16u a in shift cover that, so the float
+//   origin is still on the widened side.
+// - A reciprocal goes through five roundings (direction to float, the
+//   division, the scale factor, the subtraction and the product of the slab
+//   test), a relative error below 5u < 2^-21; the scale factors carry 2^-19
+//   beyond pad.relative, which covers it with room for the factor's own
+//   rounding (2^-24).
 // - A zero or tiny component gets reciprocal +-1e30 rather than inf, so that
 //   (plane - origin) * reciprocal is never 0 * inf = NaN.
 class BoxRay4 {
  public:
   BoxRay4(const Ray& ray, const SlabPadding& pad) {
+    const __m128 signBit = _mm_set1_ps(-0.0f);
+    const __m128 o = toFloats(ray.origin), d = toFloats(ray.direction);
+    const __m128 dSign = _mm_and_ps(d, signBit);
+    const __m128 absD = _mm_max_ps(_mm_andnot_ps(signBit, d), _mm_set1_ps(1e-30f));
+    const __m128 inv = _mm_or_ps(_mm_div_ps(_mm_set1_ps(1.0f), absD), dSign);
+    const __m128 absShift =
+        _mm_add_ps(_mm_set1_ps(static_cast<float>(pad.absolute * (1.0 + 0x1p-20))),
+                   _mm_mul_ps(_mm_set1_ps(0x1p-21f), _mm_andnot_ps(signBit, o)));
+    const __m128 shift = _mm_or_ps(absShift, dSign);  // toward the far plane
+    splat(_mm_add_ps(o, shift), originNear_);
+    splat(_mm_sub_ps(o, shift), originFar_);
+    splat(_mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 - pad.relative - 0x1p-19))),
+          invNear_);
+    splat(_mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19))),
+          invFar_);
+    // Byte offsets of each axis' near and far planes in a node, so the slab
+    // test picks them without a branch.
+    const int negative = _mm_movemask_ps(d);
     for (int a = 0; a < 3; ++a) {
-      const double d = ray.direction[a];
-      const double inv = std::abs(d) < 1e-30 ? std::copysign(1e30, d) : 1.0 / d;
-      const bool negative = std::signbit(d);
-      const double shift =
-          (pad.absolute + 0x1p-22 * std::abs(ray.origin[a])) * (negative ? -1.0 : 1.0);
-      // Byte offsets of this axis' near and far planes in a node, so the
-      // slab test picks them without a branch.
       const auto lo = static_cast<std::uint32_t>(offsetof(Bvh4Node, lo) + a * sizeof(__m128));
       const auto hi = static_cast<std::uint32_t>(offsetof(Bvh4Node, hi) + a * sizeof(__m128));
-      nearPlane_[a] = negative ? hi : lo;
-      farPlane_[a] = negative ? lo : hi;
-      originNear_[a] = _mm_set1_ps(static_cast<float>(ray.origin[a] + shift));
-      originFar_[a] = _mm_set1_ps(static_cast<float>(ray.origin[a] - shift));
-      invNear_[a] = _mm_set1_ps(static_cast<float>(inv * (1.0 - pad.relative - 0x1p-20)));
-      invFar_[a] = _mm_set1_ps(static_cast<float>(inv * (1.0 + pad.relative + 0x1p-20)));
+      const bool flip = (negative >> a) & 1;
+      nearPlane_[a] = flip ? hi : lo;
+      farPlane_[a] = flip ? lo : hi;
     }
   }
 
@@ -64,6 +78,16 @@ class BoxRay4 {
   }
 
  private:
+  // (x, y, z, 0) in float.
+  static __m128 toFloats(const Vec3& v) {
+    return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&v[0])), _mm_cvtpd_ps(_mm_load_sd(&v[2])));
+  }
+  static void splat(__m128 xyz, __m128 out[3]) {
+    out[0] = _mm_shuffle_ps(xyz, xyz, 0x00);
+    out[1] = _mm_shuffle_ps(xyz, xyz, 0x55);
+    out[2] = _mm_shuffle_ps(xyz, xyz, 0xaa);
+  }
+
   __m128 originNear_[3], originFar_[3], invNear_[3], invFar_[3];
   std::uint32_t nearPlane_[3], farPlane_[3];
 };
