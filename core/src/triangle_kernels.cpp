@@ -2,6 +2,8 @@
 // instantiated for double and float (see triangle.h for the algorithms).
 #include <cmath>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "meshtrace/spawn.h"
 #include "meshtrace/triangle.h"
 
@@ -83,13 +85,18 @@ Real edgeFunction(Real px, Real py, Real qx, Real qy) {
 // so the ray is the +z axis, then test the 2D edge functions at (0, 0). Each
 // vertex is transformed by the same expression whichever triangle it is in,
 // so shared vertices get bit-identical coordinates.
+//
+// Components are picked through pointers: glm's operator[] is a switch on
+// the index, three compares and jumps per access.
 template <typename Real>
 struct Sheared {
   Real x, y, z;
   Sheared(const Setup<Real>& r, const V3<Real>& p) {
-    z = p[r.kz] - r.origin[r.kz];
-    x = (p[r.kx] - r.origin[r.kx]) - r.sx * z;
-    y = (p[r.ky] - r.origin[r.ky]) - r.sy * z;
+    const Real* v = glm::value_ptr(p);
+    const Real* o = glm::value_ptr(r.origin);
+    z = v[r.kz] - o[r.kz];
+    x = (v[r.kx] - o[r.kx]) - r.sx * z;
+    y = (v[r.ky] - o[r.ky]) - r.sy * z;
   }
 };
 
@@ -140,9 +147,10 @@ Setup<Real> makeSetup(const Ray& ray) {
   s.kx = (s.kz + 1) % 3;
   s.ky = (s.kx + 1) % 3;
   if (s.direction[s.kz] < 0) std::swap(s.kx, s.ky);  // keep the winding
-  s.sx = s.direction[s.kx] / s.direction[s.kz];
-  s.sy = s.direction[s.ky] / s.direction[s.kz];
-  s.sz = 1 / s.direction[s.kz];
+  const Real* dir = glm::value_ptr(s.direction);
+  s.sx = dir[s.kx] / dir[s.kz];
+  s.sy = dir[s.ky] / dir[s.kz];
+  s.sz = 1 / dir[s.kz];
   return s;
 }
 

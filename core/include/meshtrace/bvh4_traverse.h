@@ -5,6 +5,8 @@
 #include <emmintrin.h>
 #include <xmmintrin.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -50,16 +52,10 @@ class BoxRay4 {
           invNear_);
     splat(_mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19))),
           invFar_);
-    // Byte offsets of each axis' near and far planes in a node, so the slab
-    // test picks them without a branch.
-    const int negative = _mm_movemask_ps(d);
-    for (int a = 0; a < 3; ++a) {
-      const auto lo = static_cast<std::uint32_t>(offsetof(Bvh4Node, lo) + a * sizeof(__m128));
-      const auto hi = static_cast<std::uint32_t>(offsetof(Bvh4Node, hi) + a * sizeof(__m128));
-      const bool flip = (negative >> a) & 1;
-      nearPlane_[a] = flip ? hi : lo;
-      farPlane_[a] = flip ? lo : hi;
-    }
+    // The near and far planes of each axis in a node, by the direction's
+    // signs, so that the slab test picks them without a branch.
+    const auto& planes = kPlaneOffsets[_mm_movemask_ps(d) & 7];
+    std::copy(planes.begin(), planes.end(), planeOffset_);
   }
 
   // Bit i set if the ray meets child i's widened box within [tMin, tMax];
@@ -68,8 +64,9 @@ class BoxRay4 {
     __m128 enter = tMin, exit = tMax;
     const char* base = reinterpret_cast<const char*>(&node);
     for (int a = 0; a < 3; ++a) {
-      const __m128 nearPlane = _mm_load_ps(reinterpret_cast<const float*>(base + nearPlane_[a]));
-      const __m128 farPlane = _mm_load_ps(reinterpret_cast<const float*>(base + farPlane_[a]));
+      const __m128 nearPlane = _mm_load_ps(reinterpret_cast<const float*>(base + planeOffset_[a]));
+      const __m128 farPlane =
+          _mm_load_ps(reinterpret_cast<const float*>(base + planeOffset_[3 + a]));
       enter = _mm_max_ps(enter, _mm_mul_ps(_mm_sub_ps(nearPlane, originNear_[a]), invNear_[a]));
       exit = _mm_min_ps(exit, _mm_mul_ps(_mm_sub_ps(farPlane, originFar_[a]), invFar_[a]));
     }
@@ -88,8 +85,23 @@ class BoxRay4 {
     out[2] = _mm_shuffle_ps(xyz, xyz, 0xaa);
   }
 
+  // Byte offsets in a Bvh4Node of the near planes (x, y, z), then the far
+  // ones, for each sign pattern of the direction (bit a: d[a] < 0).
+  static constexpr auto kPlaneOffsets = [] {
+    std::array<std::array<std::uint32_t, 6>, 8> table{};
+    for (int signs = 0; signs < 8; ++signs)
+      for (int a = 0; a < 3; ++a) {
+        const auto lo = static_cast<std::uint32_t>(offsetof(Bvh4Node, lo) + a * sizeof(__m128));
+        const auto hi = static_cast<std::uint32_t>(offsetof(Bvh4Node, hi) + a * sizeof(__m128));
+        const bool flip = (signs >> a) & 1;
+        table[signs][a] = flip ? hi : lo;
+        table[signs][3 + a] = flip ? lo : hi;
+      }
+    return table;
+  }();
+
   __m128 originNear_[3], originFar_[3], invNear_[3], invFar_[3];
-  std::uint32_t nearPlane_[3], farPlane_[3];
+  std::uint32_t planeOffset_[6];
 };
 
 namespace bvh4 {
@@ -138,9 +150,11 @@ inline Entry pushAllButNearest(const Bvh4Node& node, int mask, __m128 tEnter, En
 // tMin <= t <= tBest, nearer boxes first. The leaf may lower tBest (it is
 // read again after every call); a box entered exactly at tBest is still
 // visited, so that a later primitive at the same distance can win a tie.
+// (Both traversals are forced inline: see scene_bvh_query.cpp.)
 template <typename Leaf>
-void traverseClosest(const Bvh4& bvh, const BoxRay4& ray, double tMin, const double& tBest,
-                     std::uint64_t& visits, Leaf&& leaf) {
+[[gnu::always_inline]] inline void traverseClosest(const Bvh4& bvh, const BoxRay4& ray,
+                                                   double tMin, const double& tBest,
+                                                   std::uint64_t& visits, Leaf&& leaf) {
   if (bvh.empty()) return;
   if (bvh.nodes.empty()) return leaf(0, bvh.rootCount);
   bvh4::Entry stack[bvh4::kStackSize];
@@ -186,8 +200,9 @@ void traverseClosest(const Bvh4& bvh, const BoxRay4& ray, double tMin, const dou
 // Calls blocked(first, count) for the leaves whose boxes the ray meets at
 // tMin <= t <= tMax until one returns true; returns whether one did.
 template <typename Leaf>
-bool traverseAny(const Bvh4& bvh, const BoxRay4& ray, double tMin, double tMax,
-                 std::uint64_t& visits, Leaf&& blocked) {
+[[gnu::always_inline]] inline bool traverseAny(const Bvh4& bvh, const BoxRay4& ray, double tMin,
+                                               double tMax, std::uint64_t& visits,
+                                               Leaf&& blocked) {
   if (bvh.empty()) return false;
   if (bvh.nodes.empty()) return blocked(0, bvh.rootCount);
   std::uint32_t stack[bvh4::kStackSize];
