@@ -157,16 +157,16 @@ void measureSideBySide(const SceneIntersector& ours, const EmbreeIntersector& ro
     p.push_back(EmbreeIntersector::prepare(primary.rays[i], 0.0, primary.tMax[i]));
   for (std::size_t i = 0; i < shadow.rays.size(); ++i)
     s.push_back(EmbreeIntersector::prepare(shadow.rays[i], 0.0, shadow.tMax[i]));
-  const auto embreePrimary = [&](const EmbreeIntersector& e) {
-    return [&](std::size_t i) {
+  const auto embreePrimary = [&p](const EmbreeIntersector& e) {
+    return [&p, engine = &e](std::size_t i) {
       RTCRayHit rh = p[i];
-      e.intersect1(rh);
+      engine->intersect1(rh);
     };
   };
-  const auto embreeShadow = [&](const EmbreeIntersector& e) {
-    return [&](std::size_t i) {
+  const auto embreeShadow = [&s](const EmbreeIntersector& e) {
+    return [&s, engine = &e](std::size_t i) {
       RTCRay r = s[i].ray;
-      e.occluded1(r);
+      engine->occluded1(r);
     };
   };
   for (int k = 0; k < 2; ++k) {
