@@ -146,8 +146,8 @@ Setup<Real> makeSetup(const Ray& ray) {
   s.kz = d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
   s.kx = (s.kz + 1) % 3;
   s.ky = (s.kx + 1) % 3;
-  if (s.direction[s.kz] < 0) std::swap(s.kx, s.ky);  // keep the winding
   const Real* dir = glm::value_ptr(s.direction);
+  if (dir[s.kz] < 0) std::swap(s.kx, s.ky);  // keep the winding
   s.sx = dir[s.kx] / dir[s.kz];
   s.sy = dir[s.ky] / dir[s.kz];
   s.sz = 1 / dir[s.kz];
