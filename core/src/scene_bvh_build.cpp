@@ -39,7 +39,7 @@ MeshBvh buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
                       }
                     });
   MeshBvh out;
-  out.tree = collapseToBvh4(buildBvh(boxes, options));
+  out.tree = collapseToBvh8(buildBvh(boxes, options));
   out.frame = blockFrame(mesh);
   out.blocks = makeTriangleBlocks(mesh, out.frame, out.tree);
   return out;
@@ -66,7 +66,7 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
     add(ObjectKind::Cylinder, i, cylinderBox(scene.cylinders[i]));
   for (std::size_t i = 0; i < scene.meshes.size(); ++i)
     if (!scene.meshes[i].triangles().empty()) add(ObjectKind::Mesh, i, scene.meshes[i].bounds());
-  top_ = collapseToBvh4(buildBvh(boxes, options.top));
+  top_ = collapseToBvh8(buildBvh(boxes, options.top));
   for (const Aabb& b : boxes)
     sceneScale_ = std::max({sceneScale_, maxAbsComponent(b.min), maxAbsComponent(b.max)});
 

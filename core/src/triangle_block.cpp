@@ -24,7 +24,7 @@ BlockFrame blockFrame(const Mesh& mesh) {
 }
 
 std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFrame& frame,
-                                               Bvh4& tree) {
+                                               Bvh8& tree) {
   struct Leaf {
     std::uint32_t first, count;
   };
@@ -32,8 +32,8 @@ std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFram
   if (tree.nodes.empty()) {
     if (tree.rootCount > 0) leaves.push_back({0, tree.rootCount});
   } else {
-    for (Bvh4Node& node : tree.nodes)
-      for (int i = 0; i < 4; ++i) {
+    for (Bvh8Node& node : tree.nodes)
+      for (int i = 0; i < kBvhWidth; ++i) {
         if (node.count[i] == 0) continue;
         leaves.push_back({node.first[i], node.count[i]});
         node.first[i] = static_cast<std::uint32_t>(leaves.size() - 1);

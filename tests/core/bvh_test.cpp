@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "meshtrace/bvh.h"
-#include "meshtrace/bvh4.h"
+#include "meshtrace/bvh8.h"
 #include "meshtrace/intersector.h"
 #include "meshtrace/mesh_generators.h"
 
@@ -310,10 +310,10 @@ TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
 }
 
 // Collapsing keeps every leaf, and every child box holds its node's boxes.
-TEST(BvhBuild, FourWideTreeKeepsEveryLeafInsideItsBox) {
+TEST(BvhBuild, EightWideTreeKeepsEveryLeafInsideItsBox) {
   const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
   const std::vector<Aabb> boxes = triangleBoxes(knot);
-  const Bvh4 bvh = collapseToBvh4(buildBvh(boxes));
+  const Bvh8 bvh = collapseToBvh8(buildBvh(boxes));
   ASSERT_FALSE(bvh.nodes.empty());
   std::vector<int> seen(boxes.size(), 0);
   // Walk from the root, checking each child against the box it came with.
@@ -327,8 +327,8 @@ TEST(BvhBuild, FourWideTreeKeepsEveryLeafInsideItsBox) {
     const Item item = todo.back();
     todo.pop_back();
     ++visited;
-    const Bvh4Node& node = bvh.nodes[item.node];
-    for (int i = 0; i < 4; ++i) {
+    const Bvh8Node& node = bvh.nodes[item.node];
+    for (int i = 0; i < kBvhWidth; ++i) {
       const Aabb child{Vec3(node.lo[0][i], node.lo[1][i], node.lo[2][i]),
                        Vec3(node.hi[0][i], node.hi[1][i], node.hi[2][i])};
       if (child.empty()) continue;  // an unused slot
@@ -379,6 +379,23 @@ TEST(SceneBvh, SmallMeshesGetNoBvhAndAreSaidToBeLeftOut) {
   EXPECT_FALSE(bvh.meshBvh(1).empty());
   ASSERT_EQ(bvh.stats().leftOut.size(), 1u);
   EXPECT_NE(bvh.stats().leftOut[0].find("square.off"), std::string::npos);
+}
+
+// Nodes and triangle blocks together stay within 64 bytes per triangle on
+// large meshes: the collapse keeps small subtrees inside their parent rather
+// than giving them nodes of their own with few children.
+TEST(SceneBvh, TakesAtMost64BytesPerTriangle) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 6)));  // 82k
+  scene.meshes.push_back(
+      makeMesh("knot.off", makeTorusKnot(Vec3(3.0), 1.0, 2, 3, 0.3, 600, 40)));  // 48k
+  const SceneBvh bvh(scene);
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const double perTriangle = static_cast<double>(bvh.meshBvh(m).bytes()) /
+                               static_cast<double>(scene.meshes[m].triangles().size());
+    std::printf("%s: %.1f bytes per triangle\n", scene.meshes[m].file().c_str(), perTriangle);
+    EXPECT_LE(perTriangle, 64.0) << scene.meshes[m].file();
+  }
 }
 
 TEST(Accel, BvhIsTheDefaultAndParses) {

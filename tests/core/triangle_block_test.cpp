@@ -18,7 +18,7 @@ namespace {
 struct Blocks {
   Mesh mesh;
   BlockFrame frame;
-  Bvh4 tree;
+  Bvh8 tree;
   std::vector<TriangleBlock4> blocks;
   std::vector<int> counts;  // valid lanes per block
 };
@@ -31,7 +31,7 @@ Blocks makeBlocks(MeshData data) {
     for (auto k : t) box.extend(b.mesh.vertices()[k]);
     boxes.push_back(box);
   }
-  b.tree = collapseToBvh4(buildBvh(boxes, {.leafBlock = 4}));
+  b.tree = collapseToBvh8(buildBvh(boxes, {.leafBlock = 4}));
   b.frame = blockFrame(b.mesh);
   b.blocks = makeTriangleBlocks(b.mesh, b.frame, b.tree);
   for (const TriangleBlock4& block : b.blocks) {

@@ -13,7 +13,7 @@ namespace meshtrace {
 
 // 32 bytes: a box in float, rounded outward so that it holds its primitives
 // exactly, and either two adjacent children or a range of primitives. The
-// traversal uses the 4-wide form made from it (bvh4.h).
+// traversal uses the 8-wide form made from it (bvh8.h).
 struct BvhNode {
   float bounds[6];      // min x y z, max x y z
   std::uint32_t first;  // interior: index of the left child (right = first + 1);

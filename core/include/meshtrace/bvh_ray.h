@@ -1,7 +1,7 @@
 #pragma once
 // How much a BVH's ray-box test must widen the boxes so that it never culls
 // a box holding a hit that the primitive kernels would report (the test
-// itself: BoxRay4 in bvh4_traverse.h).
+// itself: BoxRay8 in bvh8_traverse.h).
 
 #include "meshtrace/math.h"
 

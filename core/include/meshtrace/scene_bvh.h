@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "meshtrace/bvh4.h"
-#include "meshtrace/bvh4_traverse.h"
+#include "meshtrace/bvh8.h"
+#include "meshtrace/bvh8_traverse.h"
 #include "meshtrace/counters.h"
 #include "meshtrace/scene.h"
 #include "meshtrace/triangle_block.h"
@@ -24,15 +24,15 @@ class PrimitiveQuery;
 // BENCHMARKS.md): a BVH gains nothing at 8 triangles and pays from 12 on.
 inline constexpr std::size_t kMinBvhTriangles = 12;
 
-// A mesh's BVH: 4-wide nodes whose leaves are triangle blocks.
+// A mesh's BVH: 8-wide nodes whose leaves are triangle blocks.
 struct MeshBvh {
-  Bvh4 tree;  // a leaf's `first` is its block index
+  Bvh8 tree;  // a leaf's `first` is its block index
   std::vector<TriangleBlock4> blocks;
   BlockFrame frame;
 
   bool empty() const { return blocks.empty(); }
   std::size_t bytes() const {
-    return tree.nodes.size() * sizeof(Bvh4Node) + blocks.size() * sizeof(TriangleBlock4);
+    return tree.nodes.size() * sizeof(Bvh8Node) + blocks.size() * sizeof(TriangleBlock4);
   }
 };
 
@@ -67,10 +67,10 @@ class SceneBvh {
   const SceneBvhStats& stats() const { return stats_; }
   // The BVH of mesh `i`; empty when the mesh is too small to have one.
   const MeshBvh& meshBvh(std::size_t i) const { return meshBvhs_[i]; }
-  const Bvh4& topLevel() const { return top_; }
+  const Bvh8& topLevel() const { return top_; }
 
  private:
-  BoxRay4 boxRay(const PrimitiveQuery& query) const;
+  BoxRay8 boxRay(const PrimitiveQuery& query) const;
 
   struct Object {
     ObjectKind kind;
@@ -80,7 +80,7 @@ class SceneBvh {
   const Scene& scene_;
   std::vector<MeshBvh> meshBvhs_;
   std::vector<Object> objects_;  // top-level primitives
-  Bvh4 top_;
+  Bvh8 top_;
   double sceneScale_ = 0.0;  // largest coordinate of a bounded object
   SceneBvhStats stats_;
 };

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "meshtrace/bvh4.h"
+#include "meshtrace/bvh8.h"
 #include "meshtrace/math.h"
 #include "meshtrace/triangle.h"
 
@@ -47,7 +47,7 @@ inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 // one block: afterwards a leaf's `first` is its block index, and tree.order
 // is released.
 std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFrame& frame,
-                                               Bvh4& tree);
+                                               Bvh8& tree);
 BlockFrame blockFrame(const Mesh& mesh);
 
 // One ray prepared for the blocks of one mesh.

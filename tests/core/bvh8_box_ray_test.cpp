@@ -1,4 +1,4 @@
-// BoxRay4, the float slab test of the 4-wide BVH, is conservative: whenever
+// BoxRay8, the float slab test of the 8-wide BVH, is conservative: whenever
 // the exact ray meets a box widened by the padding of bvh_ray.h (within the
 // padded distance range), the float test reports the child. Checked against
 // a long double reference on random boxes and rays, rays aimed exactly at box
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <random>
 
-#include "meshtrace/bvh4_traverse.h"
+#include "meshtrace/bvh8_traverse.h"
 
 namespace meshtrace {
 namespace {
@@ -48,22 +48,22 @@ bool exactPaddedHit(const FloatBox& box, const Ray& ray, const SlabPadding& pad,
 // whose other lanes are empty, with tMin and tMax rounded outward.
 bool floatHit(const FloatBox& box, int lane, const Ray& ray, const SlabPadding& pad, double tMin,
               double tMax) {
-  Bvh4Node node{};
+  Bvh8Node node{};
   for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kBvhWidth; ++i) {
       node.lo[a][i] = i == lane ? box.lo[a] : 1.0f;
       node.hi[a][i] = i == lane ? box.hi[a] : -1.0f;
     }
-  const BoxRay4 boxRay(ray, pad);
-  __m128 tEnter;
-  const int mask = boxRay.intersect(node, _mm_set1_ps(bvh4::atMost(tMin)),
-                                    _mm_set1_ps(bvh4::atLeast(tMax)), tEnter);
+  const BoxRay8 boxRay(ray, pad);
+  alignas(16) float tEnter[kBvhWidth];
+  const unsigned mask = boxRay.intersect(node, _mm_set1_ps(bvh8::atMost(tMin)),
+                                    _mm_set1_ps(bvh8::atLeast(tMax)), tEnter);
   return (mask >> lane) & 1;
 }
 
-class BoxRay4Conservative : public ::testing::TestWithParam<double> {};
+class BoxRay8Conservative : public ::testing::TestWithParam<double> {};
 
-TEST_P(BoxRay4Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
+TEST_P(BoxRay8Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
   const double scale = GetParam();
   std::mt19937_64 rng(20261121);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), frac(0.0, 1.0);
@@ -103,7 +103,7 @@ TEST_P(BoxRay4Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
         ++cases;
         if (!exactPaddedHit(box, ray, pad, tMin, tMax)) continue;
         ++hits;
-        if (!floatHit(box, k % 4, ray, pad, tMin, tMax)) {
+        if (!floatHit(box, k % kBvhWidth, ray, pad, tMin, tMax)) {
           ++missed;
           if (missed <= 5)
             ADD_FAILURE() << "box culled: k " << k << " single " << single << " tMax " << tMax;
@@ -117,7 +117,7 @@ TEST_P(BoxRay4Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
   EXPECT_GT(hits, cases / 2);  // most rays are aimed at the box
 }
 
-INSTANTIATE_TEST_SUITE_P(Scales, BoxRay4Conservative, ::testing::Values(1e-3, 1.0, 1e3, 1e6));
+INSTANTIATE_TEST_SUITE_P(Scales, BoxRay8Conservative, ::testing::Values(1e-3, 1.0, 1e3, 1e6));
 
 }  // namespace
 }  // namespace meshtrace

@@ -1,9 +1,11 @@
-// Collapsing a binary BVH into a 4-wide one (see bvh4.h).
+// Collapsing a binary BVH into an 8-wide one (see bvh8.h).
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "meshtrace/bvh4.h"
+#include "meshtrace/bvh8.h"
 
 namespace meshtrace {
 
@@ -17,20 +19,36 @@ double halfArea(const BvhNode& n) {
 
 class Collapser {
  public:
-  Collapser(const Bvh& binary, Bvh4& out) : in_(binary), out_(out) {}
+  Collapser(const Bvh& binary, Bvh8& out)
+      : in_(binary), out_(out), leaves_(binary.nodes.size(), 1) {
+    // Children come after their parent in the binary tree.
+    for (std::size_t i = binary.nodes.size(); i-- > 0;) {
+      const BvhNode& node = binary.nodes[i];
+      if (!node.isLeaf()) leaves_[i] = leaves_[node.first] + leaves_[node.first + 1];
+    }
+  }
 
-  // Fills a new 4-wide node from binary interior node `b`; returns its index.
+  // Fills a new 8-wide node from binary interior node `b`; returns its index.
   std::uint32_t node(std::uint32_t b, int depth) {
     out_.depth = std::max(out_.depth, depth);
-    std::uint32_t children[4] = {in_.nodes[b].first, in_.nodes[b].first + 1, 0, 0};
+    std::uint32_t children[kBvhWidth] = {in_.nodes[b].first, in_.nodes[b].first + 1};
     int n = 2;
-    while (n < 4) {
+    while (n < kBvhWidth) {
+      // The widest interior child, or the widest of those whose whole
+      // subtree still fits in this node: a small subtree left as a child of
+      // its own would make a node with few children.
       int widest = -1;
-      for (int i = 0; i < n; ++i)
-        if (!in_.nodes[children[i]].isLeaf() &&
-            (widest < 0 || halfArea(in_.nodes[children[i]]) >
-                               halfArea(in_.nodes[children[widest]])))
+      bool widestFits = false;
+      for (int i = 0; i < n; ++i) {
+        if (in_.nodes[children[i]].isLeaf()) continue;
+        const bool fits = leaves_[children[i]] - 1 <= static_cast<std::uint32_t>(kBvhWidth - n);
+        if (widest < 0 || (fits && !widestFits) ||
+            (fits == widestFits &&
+             halfArea(in_.nodes[children[i]]) > halfArea(in_.nodes[children[widest]]))) {
           widest = i;
+          widestFits = fits;
+        }
+      }
       if (widest < 0) break;
       const std::uint32_t split = children[widest];
       children[widest] = in_.nodes[split].first;
@@ -38,7 +56,7 @@ class Collapser {
     }
     const auto index = static_cast<std::uint32_t>(out_.nodes.size());
     out_.nodes.emplace_back();
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kBvhWidth; ++i) {
       const bool used = i < n;
       const BvhNode* c = used ? &in_.nodes[children[i]] : nullptr;
       for (int a = 0; a < 3; ++a) {
@@ -46,9 +64,10 @@ class Collapser {
         out_.nodes[index].hi[a][i] = used ? c->bounds[a + 3] : kEmptyHi;
       }
       out_.nodes[index].first[i] = used && c->isLeaf() ? c->first : 0;
-      if (used && c->count > std::numeric_limits<std::uint16_t>::max())
-        throw std::length_error("BVH leaf larger than a 4-wide node can hold");
-      out_.nodes[index].count[i] = static_cast<std::uint16_t>(used ? c->count : 0);
+      if (used && c->count > kMaxBvh8Leaf)
+        throw std::length_error("BVH leaf of " + std::to_string(c->count) +
+                                " primitives, more than a node can hold");
+      out_.nodes[index].count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
     }
     setChildOrders(out_.nodes[index], children, n);
     // Interior children after the node itself (depth-first order).
@@ -64,11 +83,12 @@ class Collapser {
   // Orders the used children of each octant by their box centres projected
   // on the octant's diagonal: a direction-only estimate of which box a ray
   // enters first, free of per-ray work.
-  void setChildOrders(Bvh4Node& node, const std::uint32_t* children, int n) const {
+  void setChildOrders(Bvh8Node& node, const std::uint32_t* children, int n) const {
     for (int octant = 0; octant < 8; ++octant) {
-      double key[4];
-      int slots[4] = {0, 1, 2, 3};
-      for (int i = 0; i < 4; ++i) {
+      double key[kBvhWidth];
+      int slots[kBvhWidth];
+      for (int i = 0; i < kBvhWidth; ++i) {
+        slots[i] = i;
         key[i] = std::numeric_limits<double>::infinity();  // unused slots go last
         if (i >= n) continue;
         const float* b = in_.nodes[children[i]].bounds;
@@ -78,34 +98,38 @@ class Collapser {
           key[i] += (octant >> a & 1) ? -centre2 : centre2;
         }
       }
-      std::stable_sort(slots, slots + 4, [&](int x, int y) { return key[x] < key[y]; });
-      const auto packed =
-          static_cast<std::uint8_t>(slots[0] | slots[1] << 2 | slots[2] << 4 | slots[3] << 6);
-      const auto* found = std::find(kChildOrders.begin(), kChildOrders.end(), packed);
-      node.order[octant] = static_cast<std::uint8_t>(found - kChildOrders.begin());
+      std::stable_sort(slots, slots + kBvhWidth, [&](int x, int y) { return key[x] < key[y]; });
+      std::uint32_t packed = 0;
+      for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
+      for (int byte = 0; byte < 3; ++byte)
+        node.order[octant][byte] = static_cast<std::uint8_t>(packed >> (8 * byte));
     }
   }
 
   static constexpr float kEmptyLo = std::numeric_limits<float>::infinity();
   static constexpr float kEmptyHi = -std::numeric_limits<float>::infinity();
   const Bvh& in_;
-  Bvh4& out_;
+  Bvh8& out_;
+  std::vector<std::uint32_t> leaves_;  // leaves under each binary node
 };
 
 }  // namespace
 
-Bvh4 collapseToBvh4(const Bvh& binary) {
-  Bvh4 out;
+Bvh8 collapseToBvh8(const Bvh& binary) {
+  Bvh8 out;
   if (binary.empty()) return out;
   out.order = binary.order;
   const BvhNode& root = binary.nodes[0];
-  std::copy(root.bounds, root.bounds + 6, out.rootBounds);
+  for (int k = 0; k < 4; ++k) {
+    out.rootLo[k] = root.bounds[std::min(k, 2)];
+    out.rootHi[k] = root.bounds[3 + std::min(k, 2)];
+  }
   if (root.isLeaf()) {
     out.rootCount = root.count;
     out.depth = 1;
     return out;
   }
-  out.nodes.reserve(binary.nodes.size() / 3 + 1);
+  out.nodes.reserve(binary.nodes.size() / 6 + 1);
   Collapser(binary, out).node(0, 1);
   return out;
 }
