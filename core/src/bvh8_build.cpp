@@ -84,6 +84,11 @@ class Collapser {
   // on the octant's diagonal: a direction-only estimate of which box a ray
   // enters first, free of per-ray work.
   void setChildOrders(Bvh8Node& node, const std::uint32_t* children, int n) const {
+    double centre2[kBvhWidth][3];  // twice each used child's box centre
+    for (int i = 0; i < n; ++i) {
+      const float* b = in_.nodes[children[i]].bounds;
+      for (int a = 0; a < 3; ++a) centre2[i][a] = static_cast<double>(b[a]) + b[a + 3];
+    }
     for (int octant = 0; octant < 8; ++octant) {
       double key[kBvhWidth];
       int slots[kBvhWidth];
@@ -91,12 +96,8 @@ class Collapser {
         slots[i] = i;
         key[i] = std::numeric_limits<double>::infinity();  // unused slots go last
         if (i >= n) continue;
-        const float* b = in_.nodes[children[i]].bounds;
         key[i] = 0.0;
-        for (int a = 0; a < 3; ++a) {
-          const double centre2 = static_cast<double>(b[a]) + b[a + 3];
-          key[i] += (octant >> a & 1) ? -centre2 : centre2;
-        }
+        for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
       }
       std::stable_sort(slots, slots + kBvhWidth, [&](int x, int y) { return key[x] < key[y]; });
       std::uint32_t packed = 0;

@@ -130,8 +130,9 @@ class BoxRay8 {
     std::array<std::array<std::uint32_t, 6>, 8> table{};
     for (int signs = 0; signs < 8; ++signs)
       for (int a = 0; a < 3; ++a) {
-        const auto lo = static_cast<std::uint32_t>(offsetof(Bvh8Node, lo) + a * kBvhWidth * sizeof(float));
-        const auto hi = static_cast<std::uint32_t>(offsetof(Bvh8Node, hi) + a * kBvhWidth * sizeof(float));
+        const std::size_t axis = a * kBvhWidth * sizeof(float);
+        const auto lo = static_cast<std::uint32_t>(offsetof(Bvh8Node, lo) + axis);
+        const auto hi = static_cast<std::uint32_t>(offsetof(Bvh8Node, hi) + axis);
         const bool flip = (signs >> a) & 1;
         table[signs][a] = flip ? hi : lo;
         table[signs][3 + a] = flip ? lo : hi;
