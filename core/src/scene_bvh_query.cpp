@@ -56,9 +56,9 @@ class LazyBlockRay {
 
 }  // namespace
 
-[[gnu::always_inline]] inline BoxRay8 SceneBvh::boxRay(const PrimitiveQuery& query) const {
+[[gnu::always_inline]] inline SlabRay SceneBvh::slabRay(const PrimitiveQuery& query) const {
   const bool single = query.kernel().precision == Precision::Single;
-  return BoxRay8(query.ray(), slabPadding(single, query.ray().origin, sceneScale_));
+  return SlabRay(query.ray(), slabPadding(single, query.ray().origin, sceneScale_));
 }
 
 // The leaf work of both levels is forced inline (GCC and Clang take the
@@ -71,7 +71,7 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
                           Counters& counters) const {
   for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
     query.offerShape(ObjectKind::Plane, i, closest);
-  const BoxRay8 ray = boxRay(query);
+  const SlabRay ray = slabRay(query);
   const double tMin = query.tMin();
   std::uint64_t visits = 0;
   const auto offerMesh = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {
@@ -107,7 +107,7 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
 bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const {
   for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
     if (query.shapeBlocks(ObjectKind::Plane, i, tMax)) return true;
-  const BoxRay8 ray = boxRay(query);
+  const SlabRay ray = slabRay(query);
   const double tMin = query.tMin();
   std::uint64_t visits = 0;
   const auto meshBlocks = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {

@@ -1,6 +1,7 @@
-// BoxRay8, the float slab test of the 8-wide BVH, is conservative: whenever
-// the exact ray meets a box widened by the padding of bvh_ray.h (within the
-// padded distance range), the float test reports the child. Checked against
+// The float slab tests of the 8-wide BVH are conservative: whenever the
+// exact ray meets a box widened by the padding of bvh_ray.h (within the
+// padded distance range), BoxRay8 reports the child, and SlabRay::meets
+// (a root leaf's box) reports the box. Checked against
 // a long double reference on random boxes and rays, rays aimed exactly at box
 // faces, edges and corners, origins from 1e-3 to 1e6, and directions with
 // zero and tiny components.
@@ -54,11 +55,22 @@ bool floatHit(const FloatBox& box, int lane, const Ray& ray, const SlabPadding& 
       node.lo[a][i] = i == lane ? box.lo[a] : 1.0f;
       node.hi[a][i] = i == lane ? box.hi[a] : -1.0f;
     }
-  const BoxRay8 boxRay(ray, pad);
+  const BoxRay8 boxRay(SlabRay(ray, pad));
   alignas(16) float tEnter[kBvhWidth];
   const unsigned mask = boxRay.intersect(node, _mm_set1_ps(bvh8::atMost(tMin)),
                                     _mm_set1_ps(bvh8::atLeast(tMax)), tEnter);
   return (mask >> lane) & 1;
+}
+
+// The test of a tree whose root is a leaf, on the same box.
+bool floatRootHit(const FloatBox& box, const Ray& ray, const SlabPadding& pad, double tMin,
+                  double tMax) {
+  alignas(16) float lo[4], hi[4];
+  for (int a = 0; a < 4; ++a) {
+    lo[a] = box.lo[std::min(a, 2)];
+    hi[a] = box.hi[std::min(a, 2)];
+  }
+  return SlabRay(ray, pad).meets(lo, hi, bvh8::atMost(tMin), bvh8::atLeast(tMax));
 }
 
 class BoxRay8Conservative : public ::testing::TestWithParam<double> {};
@@ -68,7 +80,7 @@ TEST_P(BoxRay8Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
   std::mt19937_64 rng(20261121);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), frac(0.0, 1.0);
   const double tiny[] = {0.0, -0.0, 1e-35, -1e-35, 1e-20, -3e-9};
-  std::size_t cases = 0, hits = 0, missed = 0;
+  std::size_t cases = 0, hits = 0, missed = 0, missedAsRoot = 0;
   for (int k = 0; k < 60000; ++k) {
     // A box somewhere in [-scale, scale]^3, sometimes flat on one axis.
     FloatBox box;
@@ -108,12 +120,15 @@ TEST_P(BoxRay8Conservative, ReportsEveryBoxTheExactPaddedTestMeets) {
           if (missed <= 5)
             ADD_FAILURE() << "box culled: k " << k << " single " << single << " tMax " << tMax;
         }
+        if (!floatRootHit(box, ray, pad, tMin, tMax) && ++missedAsRoot <= 5)
+          ADD_FAILURE() << "root box culled: k " << k << " single " << single << " tMax " << tMax;
       }
     }
   }
-  std::printf("scale %g: %zu cases, %zu exact hits, %zu culled by the float test\n", scale, cases,
-              hits, missed);
+  std::printf("scale %g: %zu cases, %zu exact hits, %zu culled as a child, %zu as a root\n", scale,
+              cases, hits, missed, missedAsRoot);
   EXPECT_EQ(missed, 0u);
+  EXPECT_EQ(missedAsRoot, 0u);
   EXPECT_GT(hits, cases / 2);  // most rays are aimed at the box
 }
 

@@ -29,11 +29,11 @@ Bvh8 boxesAlong(const Vec3& diagonal, int count) {
 // lowers the best distance to `hitAt` when it reaches box `hitBox`.
 std::vector<std::uint32_t> leavesVisited(const Bvh8& bvh, const Ray& ray, int hitBox = -1,
                                          double hitAt = kInfinity) {
-  const BoxRay8 boxRay(ray, SlabPadding{0x1p-20, 1e-9});
+  const SlabRay slab(ray, SlabPadding{0x1p-20, 1e-9});
   double tBest = kInfinity;
   std::uint64_t visits = 0;
   std::vector<std::uint32_t> seen;
-  traverseClosest(bvh, boxRay, 0.0, tBest, visits, [&](std::uint32_t first, std::uint32_t count) {
+  traverseClosest(bvh, slab, 0.0, tBest, visits, [&](std::uint32_t first, std::uint32_t count) {
     for (std::uint32_t k = first; k < first + count; ++k) {
       seen.push_back(bvh.order[k]);
       if (static_cast<int>(bvh.order[k]) == hitBox) tBest = hitAt;

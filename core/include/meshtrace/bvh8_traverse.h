@@ -35,9 +35,9 @@ namespace meshtrace {
 //   rounding (2^-24).
 // - A zero or tiny component gets reciprocal +-1e30 rather than inf, so that
 //   (plane - origin) * reciprocal is never 0 * inf = NaN.
-class BoxRay8 {
+class SlabRay {
  public:
-  BoxRay8(const Ray& ray, const SlabPadding& pad) {
+  SlabRay(const Ray& ray, const SlabPadding& pad) {
     const __m128 signBit = _mm_set1_ps(-0.0f);
     const __m128 o = toFloats(ray.origin), d = toFloats(ray.direction);
     const __m128 dSign = _mm_and_ps(d, signBit);
@@ -47,33 +47,25 @@ class BoxRay8 {
         _mm_add_ps(_mm_set1_ps(static_cast<float>(pad.absolute * (1.0 + 0x1p-20))),
                    _mm_mul_ps(_mm_set1_ps(0x1p-21f), _mm_andnot_ps(signBit, o)));
     const __m128 shift = _mm_or_ps(absShift, dSign);  // toward the far plane
-    splat(_mm_add_ps(o, shift), originNear_);
-    splat(_mm_sub_ps(o, shift), originFar_);
-    splat(_mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 - pad.relative - 0x1p-19))),
-          invNear_);
-    splat(_mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19))),
-          invFar_);
-    // The near and far planes of each axis in a node, by the direction's
-    // signs, so that the slab test picks them without a branch.
-    octant_ = _mm_movemask_ps(d) & 7;
-    const auto& planes = kPlaneOffsets[octant_];
-    std::copy(planes.begin(), planes.end(), planeOffset_);
+    originNear = _mm_add_ps(o, shift);
+    originFar = _mm_sub_ps(o, shift);
+    invNear = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 - pad.relative - 0x1p-19)));
+    invFar = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19)));
+    // Signs, not comparisons: -0.0 goes with the negative side, as its
+    // reciprocal does.
+    negative_ = _mm_cmplt_ps(invNear, _mm_setzero_ps());
+    octant = _mm_movemask_ps(d) & 7;
   }
 
   // Whether the ray meets the widened box lo-hi within [tMin, tMax]: the
   // node test's arithmetic with the three axes side by side (lo and hi are
   // (x, y, z, z)), for a tree whose root is a leaf.
   bool meets(const float* lo, const float* hi, float tMin, float tMax) const {
-    const auto xyz = [](const __m128* splatted) {
-      return _mm_movelh_ps(_mm_unpacklo_ps(splatted[0], splatted[1]), splatted[2]);
-    };
-    const __m128 invNear = xyz(invNear_);
-    const __m128 negative = _mm_cmplt_ps(invNear, _mm_setzero_ps());
     const __m128 low = _mm_load_ps(lo), high = _mm_load_ps(hi);
-    const __m128 nearPlane = _mm_or_ps(_mm_and_ps(negative, high), _mm_andnot_ps(negative, low));
-    const __m128 farPlane = _mm_or_ps(_mm_and_ps(negative, low), _mm_andnot_ps(negative, high));
-    __m128 enter = _mm_mul_ps(_mm_sub_ps(nearPlane, xyz(originNear_)), invNear);
-    __m128 exit = _mm_mul_ps(_mm_sub_ps(farPlane, xyz(originFar_)), xyz(invFar_));
+    const __m128 nearPlane = _mm_or_ps(_mm_and_ps(negative_, high), _mm_andnot_ps(negative_, low));
+    const __m128 farPlane = _mm_or_ps(_mm_and_ps(negative_, low), _mm_andnot_ps(negative_, high));
+    __m128 enter = _mm_mul_ps(_mm_sub_ps(nearPlane, originNear), invNear);
+    __m128 exit = _mm_mul_ps(_mm_sub_ps(farPlane, originFar), invFar);
     enter = _mm_max_ps(enter, _mm_shuffle_ps(enter, enter, 0x4e));
     enter = _mm_max_ps(enter, _mm_shuffle_ps(enter, enter, 0xb1));
     exit = _mm_min_ps(exit, _mm_shuffle_ps(exit, exit, 0x4e));
@@ -82,7 +74,36 @@ class BoxRay8 {
     return in <= out && in <= tMax && tMin <= out;
   }
 
-  // The direction's signs: bit a set if d[a] < 0.
+  // Lanes x, y, z (w: a copy of z, harmless in the reductions above).
+  __m128 originNear, originFar, invNear, invFar;
+  int octant;  // the direction's signs: bit a set if d[a] < 0
+
+ private:
+  // (x, y, z, z) in float.
+  static __m128 toFloats(const Vec3& v) {
+    const __m128 z = _mm_cvtpd_ps(_mm_load1_pd(&v[2]));
+    return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&v[0])), z);
+  }
+
+  __m128 negative_;  // lanes whose direction component is negative
+};
+
+// The slab ray with each axis splatted over four lanes, for the node test.
+// Made when a traversal reaches its first node: a ray that misses a tree
+// whose root is a leaf never needs it.
+class BoxRay8 {
+ public:
+  explicit BoxRay8(const SlabRay& ray) : octant_(ray.octant) {
+    splat(ray.originNear, originNear_);
+    splat(ray.originFar, originFar_);
+    splat(ray.invNear, invNear_);
+    splat(ray.invFar, invFar_);
+    // The near and far planes of each axis in a node, by the direction's
+    // signs, so that the slab test picks them without a branch.
+    const auto& planes = kPlaneOffsets[octant_];
+    std::copy(planes.begin(), planes.end(), planeOffset_);
+  }
+
   int octant() const { return octant_; }
 
   // Bit i set if the ray meets child i's widened box within [tMin, tMax];
@@ -114,10 +135,6 @@ class BoxRay8 {
   }
 
  private:
-  // (x, y, z, 0) in float.
-  static __m128 toFloats(const Vec3& v) {
-    return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&v[0])), _mm_cvtpd_ps(_mm_load_sd(&v[2])));
-  }
   static void splat(__m128 xyz, __m128 out[3]) {
     out[0] = _mm_shuffle_ps(xyz, xyz, 0x00);
     out[1] = _mm_shuffle_ps(xyz, xyz, 0x55);
@@ -189,15 +206,16 @@ inline Entry pushInOrder(const Bvh8Node& node, unsigned mask, std::uint32_t chil
 // and 95 ns with this fixed order, for the same 5.3 node visits.
 // (Both traversals are forced inline: see scene_bvh_query.cpp.)
 template <typename Leaf>
-[[gnu::always_inline]] inline void traverseClosest(const Bvh8& bvh, const BoxRay8& ray,
+[[gnu::always_inline]] inline void traverseClosest(const Bvh8& bvh, const SlabRay& slab,
                                                    double tMin, const double& tBest,
                                                    std::uint64_t& visits, Leaf&& leaf) {
   if (bvh.empty()) return;
   if (bvh.nodes.empty()) {
-    if (ray.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tBest)))
+    if (slab.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tBest)))
       leaf(0, bvh.rootCount);
     return;
   }
+  const BoxRay8 ray(slab);
   bvh8::Entry stack[bvh8::kStackSize];
   int top = 0;
   // Locals, not the members and the caller's counter: the leaf call may
@@ -241,13 +259,14 @@ template <typename Leaf>
 // Calls blocked(first, count) for the leaves whose boxes the ray meets at
 // tMin <= t <= tMax until one returns true; returns whether one did.
 template <typename Leaf>
-[[gnu::always_inline]] inline bool traverseAny(const Bvh8& bvh, const BoxRay8& ray, double tMin,
+[[gnu::always_inline]] inline bool traverseAny(const Bvh8& bvh, const SlabRay& slab, double tMin,
                                                double tMax, std::uint64_t& visits,
                                                Leaf&& blocked) {
   if (bvh.empty()) return false;
   if (bvh.nodes.empty())
-    return ray.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tMax)) &&
+    return slab.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tMax)) &&
            blocked(0, bvh.rootCount);
+  const BoxRay8 ray(slab);
   std::uint32_t stack[bvh8::kStackSize];
   int top = 0;
   stack[top++] = 0;

@@ -70,7 +70,7 @@ class SceneBvh {
   const Bvh8& topLevel() const { return top_; }
 
  private:
-  BoxRay8 boxRay(const PrimitiveQuery& query) const;
+  SlabRay slabRay(const PrimitiveQuery& query) const;
 
   struct Object {
     ObjectKind kind;
