@@ -99,7 +99,14 @@ class Collapser {
         key[i] = 0.0;
         for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
       }
-      std::stable_sort(slots, slots + kBvhWidth, [&](int x, int y) { return key[x] < key[y]; });
+      // A stable insertion sort: std::stable_sort takes a heap buffer, and
+      // its allocations were most of the collapse's time.
+      for (int k = 1; k < kBvhWidth; ++k) {
+        const int slot = slots[k];
+        int j = k;
+        for (; j > 0 && key[slot] < key[slots[j - 1]]; --j) slots[j] = slots[j - 1];
+        slots[j] = slot;
+      }
       std::uint32_t packed = 0;
       for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
       for (int byte = 0; byte < 3; ++byte)
