@@ -1,5 +1,9 @@
 // Collapsing a binary BVH into an 8-wide one (see bvh8.h).
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -21,6 +25,8 @@ class Collapser {
  public:
   Collapser(const Bvh& binary, Bvh8& out)
       : in_(binary), out_(out), leaves_(binary.nodes.size(), 1) {
+    children_.reserve(binary.nodes.size() / 6 + 1);
+    counts_.reserve(binary.nodes.size() / 6 + 1);
     // Children come after their parent in the binary tree.
     for (std::size_t i = binary.nodes.size(); i-- > 0;) {
       const BvhNode& node = binary.nodes[i];
@@ -69,7 +75,11 @@ class Collapser {
                                 " primitives, more than a node can hold");
       out_.nodes[index].count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
     }
-    setChildOrders(out_.nodes[index], children, n);
+    // The child orders are filled in afterwards, in parallel (setChildOrders).
+    std::array<std::uint32_t, kBvhWidth> used{};
+    std::copy(children, children + n, used.begin());
+    children_.push_back(used);
+    counts_.push_back(static_cast<std::uint8_t>(n));
     // Interior children after the node itself (depth-first order).
     for (int i = 0; i < n; ++i)
       if (!in_.nodes[children[i]].isLeaf()) {
@@ -77,6 +87,15 @@ class Collapser {
         out_.nodes[index].first[i] = child;
       }
     return index;
+  }
+
+  // Fills in every node's child orders (see the overload below).
+  void setChildOrders() {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out_.nodes.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i)
+                          setChildOrders(out_.nodes[i], children_[i].data(), counts_[i]);
+                      });
   }
 
  private:
@@ -119,6 +138,9 @@ class Collapser {
   const Bvh& in_;
   Bvh8& out_;
   std::vector<std::uint32_t> leaves_;  // leaves under each binary node
+  // Per 8-wide node, in node order: its binary children and their number.
+  std::vector<std::array<std::uint32_t, kBvhWidth>> children_;
+  std::vector<std::uint8_t> counts_;
 };
 
 }  // namespace
@@ -138,7 +160,9 @@ Bvh8 collapseToBvh8(const Bvh& binary) {
     return out;
   }
   out.nodes.reserve(binary.nodes.size() / 6 + 1);
-  Collapser(binary, out).node(0, 1);
+  Collapser collapser(binary, out);
+  collapser.node(0, 1);
+  collapser.setChildOrders();
   return out;
 }
 
