@@ -76,9 +76,9 @@ class Collapser {
       out_.nodes[index].count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
     }
     // The child orders are filled in afterwards, in parallel (setChildOrders).
-    std::array<std::uint32_t, kBvhWidth> used{};
-    std::copy(children, children + n, used.begin());
-    children_.push_back(used);
+    std::array<std::uint32_t, kBvhWidth> binaryChildren{};
+    std::copy(children, children + n, binaryChildren.begin());
+    children_.push_back(binaryChildren);
     counts_.push_back(static_cast<std::uint8_t>(n));
     // Interior children after the node itself (depth-first order).
     for (int i = 0; i < n; ++i)
@@ -119,7 +119,7 @@ class Collapser {
         for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
       }
       // A stable insertion sort: std::stable_sort takes a heap buffer, and
-      // its allocations were most of the collapse's time.
+      // with its allocations it was half of the collapse's instructions.
       for (int k = 1; k < kBvhWidth; ++k) {
         const int slot = slots[k];
         int j = k;

@@ -31,15 +31,23 @@ constexpr std::uint32_t kParallelSubtrees = 4096;
 // depth by this plus log2(n) <= kMaxBvhDepth.
 constexpr int kMedianDepth = 64;
 
+// The next float above (below) a float that is not NaN or +inf (-inf),
+// by stepping its bits: std::nextafter is a library call, made here for
+// half of the six box coordinates of every primitive.
+float floatAbove(float f) {
+  if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+}
+float floatBelow(float f) { return -floatAbove(-f); }
+
 float roundDown(double x) {
-  float f = static_cast<float>(x);
-  if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? floatBelow(f) : f;
 }
 float roundUp(double x) {
-  float f = static_cast<float>(x);
-  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? floatAbove(f) : f;
 }
 
 // Lanes x, y, z. The w lane of a primitive's box holds its index, whose bit
@@ -134,18 +142,18 @@ struct Bins {
 
   explicit Bins(int bins = kMaxBins) : used(bins) {
     const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    const __m128 negInf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
     for (auto& axis : bin)
-      for (int i = 0; i < used; ++i) axis[i] = {inf, _mm_set1_ps(-std::numeric_limits<float>::infinity()), 0};
+      for (int i = 0; i < used; ++i) axis[i] = {inf, negInf, 0};
   }
   void add(const Bins& o) {
     for (int a = 0; a < 3; ++a)
       for (int i = 0; i < used; ++i) {
         bin[a][i].lo = _mm_min_ps(bin[a][i].lo, o.bin[a][i].lo);
         bin[a][i].hi = _mm_max_ps(bin[a][i].hi, o.bin[a][i].hi);
-        bin[a][i].count += o.count(a, i);
+        bin[a][i].count += o.bin[a][i].count;
       }
   }
-  std::uint32_t count(int a, int i) const { return bin[a][i].count; }
 };
 
 // Runs `scan(begin, end, out)` over [begin, end), in parallel for large
@@ -247,14 +255,14 @@ class Builder {
       std::uint32_t rightCount = 0;
       for (int i = bins_ - 1; i > 0; --i) {
         right.extend(bins.bin[a][i].lo, bins.bin[a][i].hi);
-        rightCount += bins.count(a, i);
+        rightCount += bins.bin[a][i].count;
         rightCost[i - 1] = right.halfArea() * tests(rightCount);
       }
       Box4 left;
       std::uint32_t leftCount = 0;
       for (int i = 0; i < bins_ - 1; ++i) {
         left.extend(bins.bin[a][i].lo, bins.bin[a][i].hi);
-        leftCount += bins.count(a, i);
+        leftCount += bins.bin[a][i].count;
         if (leftCount == 0 || leftCount == end - begin) continue;
         const float cost = left.halfArea() * tests(leftCount) + rightCost[i];
         if (best.axis < 0 || cost < best.cost) best = {a, i, cost};
