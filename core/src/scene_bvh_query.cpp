@@ -1,4 +1,6 @@
 // Closest-hit and any-hit queries through the scene's two-level BVH.
+#include <xmmintrin.h>
+
 #include <new>
 #include <type_traits>
 
@@ -19,9 +21,16 @@ int laneCount(int mask) {
 // Calls exact(triangle) for each triangle of the block that the float filter
 // passes on, until one call returns true. Every lane counts as one triangle
 // test: those dropped here, the others in the exact test.
+// The exact test starts by reading the triangle's vertex indices from the
+// mesh (`triangles`), a cache miss on a large mesh; asking for them before
+// the filter runs overlaps that wait with it (knot1m's hitting primary
+// rays: 880 ns -> 775 ns; no change on meshes that fit in cache).
 template <typename Exact>
 bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
-                      double tMin, double tMax, Counters& counters, Exact&& exact) {
+                      const TriangleIndices* triangles, double tMin, double tMax,
+                      Counters& counters, Exact&& exact) {
+  for (std::uint32_t k = 0; k < n; ++k)
+    _mm_prefetch(reinterpret_cast<const char*>(triangles + block.id[k]), _MM_HINT_T0);
   int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
   counters.triangleTests += n - laneCount(mask);
   for (; mask; mask &= mask - 1)
@@ -82,9 +91,10 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
       return;
     }
     LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+    const TriangleIndices* triangles = scene_.meshes[mesh].triangles().data();
     const auto offerBlock = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
-      forEachCandidate(blockRay.get(), bvh.blocks[block], n, tMin, closest.t(), counters,
-                       [&](std::uint32_t tri) {
+      forEachCandidate(blockRay.get(), bvh.blocks[block], n, triangles, tMin, closest.t(),
+                       counters, [&](std::uint32_t tri) {
                          query.offerTriangle(mesh, tri, closest);
                          return false;
                        });
@@ -119,9 +129,10 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
       return false;
     }
     LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
+    const TriangleIndices* triangles = scene_.meshes[mesh].triangles().data();
     const auto blockBlocks = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
       return forEachCandidate(
-          blockRay.get(), bvh.blocks[block], n, tMin, tMax, counters,
+          blockRay.get(), bvh.blocks[block], n, triangles, tMin, tMax, counters,
           [&](std::uint32_t tri) { return query.triangleBlocks(mesh, tri, tMax); });
     };
     return traverseAny(bvh.tree, ray, tMin, tMax, visits, blockBlocks);
