@@ -184,13 +184,15 @@ struct Split {
 
 class Builder {
  public:
-  Builder(std::span<const Aabb> boxes, const BvhBuildOptions& options, Bvh& out)
+  // boxOf(i) is primitive i's box in double.
+  template <typename BoxOf>
+  Builder(std::size_t n, const BoxOf& boxOf, const BvhBuildOptions& options, Bvh& out)
       : options_(options), out_(out), bins_(std::clamp(options.bins, 2, kMaxBins)),
-        refs_(new PrimRef[boxes.size()]), nodes_(new BvhNode[2 * boxes.size()]) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
+        refs_(new PrimRef[n]), nodes_(new BvhNode[2 * n]) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          const Aabb& b = boxes[i];
+                          const Aabb b = boxOf(i);
                           float index;
                           const auto id = static_cast<std::uint32_t>(i);
                           std::memcpy(&index, &id, sizeof index);
@@ -375,7 +377,22 @@ class Builder {
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options) {
   Bvh bvh;
   if (boxes.empty()) return bvh;
-  Builder(boxes, options, bvh).run(static_cast<std::uint32_t>(boxes.size()));
+  const auto boxOf = [&](std::size_t i) { return boxes[i]; };
+  Builder(boxes.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(boxes.size()));
+  return bvh;
+}
+
+Bvh buildBvh(std::span<const Vec3> vertices,
+             std::span<const std::array<std::uint32_t, 3>> triangles,
+             const BvhBuildOptions& options) {
+  Bvh bvh;
+  if (triangles.empty()) return bvh;
+  const auto boxOf = [&](std::size_t i) {
+    Aabb b;
+    for (std::uint32_t k : triangles[i]) b.extend(vertices[k]);
+    return b;
+  };
+  Builder(triangles.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(triangles.size()));
   return bvh;
 }
 

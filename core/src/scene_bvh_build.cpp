@@ -28,18 +28,8 @@ Aabb cylinderBox(const Cylinder& c) {
 }
 
 MeshBvh buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
-  const auto& v = mesh.vertices();
-  const auto& tris = mesh.triangles();
-  std::vector<Aabb> boxes(tris.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tris.size(), 16384),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        Aabb& b = boxes[i];
-                        for (std::uint32_t k : tris[i]) b.extend(v[k]);
-                      }
-                    });
   MeshBvh out;
-  out.tree = collapseToBvh8(buildBvh(boxes, options));
+  out.tree = collapseToBvh8(buildBvh(mesh.vertices(), mesh.triangles(), options));
   out.frame = blockFrame(mesh);
   out.blocks = makeTriangleBlocks(mesh, out.frame, out.tree);
   return out;

@@ -2,6 +2,7 @@
 // A bounding volume hierarchy over a set of primitive boxes: the layout and
 // its binned SAH build. Used once per large mesh (primitives = triangles) and
 // once per scene (primitives = spheres, cylinders and meshes).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -50,6 +51,12 @@ struct BvhBuildOptions {
 // at most maxLeafSize primitives. Large nodes are binned and both subtrees
 // built in parallel. The tree shape does not depend on the thread count.
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
+// The same over a mesh's triangles, their boxes taken straight from the
+// vertices (no box array: for a large mesh, that array was the build's
+// largest allocation).
+Bvh buildBvh(std::span<const Vec3> vertices,
+             std::span<const std::array<std::uint32_t, 3>> triangles,
+             const BvhBuildOptions& options = {});
 
 // The largest depth a built tree can have (traversal stacks are this deep).
 inline constexpr int kMaxBvhDepth = 128;
