@@ -24,7 +24,7 @@ int laneCount(int mask) {
 // The exact test starts by reading the triangle's vertex indices from the
 // mesh (`triangles`), a cache miss on a large mesh; asking for them before
 // the filter runs overlaps that wait with it (knot1m's hitting primary
-// rays: 880 ns -> 775 ns; no change on meshes that fit in cache).
+// rays: about 880 ns -> 770 ns; no change on meshes that fit in cache).
 template <typename Exact>
 bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
                       const TriangleIndices* triangles, double tMin, double tMax,

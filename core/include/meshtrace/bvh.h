@@ -52,8 +52,8 @@ struct BvhBuildOptions {
 // built in parallel. The tree shape does not depend on the thread count.
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
 // The same over a mesh's triangles, their boxes taken straight from the
-// vertices (no box array: for a large mesh, that array was the build's
-// largest allocation).
+// vertices: no array of double boxes (48 bytes a triangle) to fill and
+// read back.
 Bvh buildBvh(std::span<const Vec3> vertices,
              std::span<const std::array<std::uint32_t, 3>> triangles,
              const BvhBuildOptions& options = {});
