@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -21,12 +20,46 @@ double halfArea(const BvhNode& n) {
   return x * y + y * z + z * x;
 }
 
+// Orders the used children of each octant by their box centres projected
+// on the octant's diagonal: a direction-only estimate of which box a ray
+// enters first, free of per-ray work. Used slots come first; an unused one
+// has an empty box (lo > hi).
+void setChildOrders(Bvh8Node& node) {
+  int n = 0;
+  while (n < kBvhWidth && node.lo[0][n] <= node.hi[0][n]) ++n;
+  double centre2[kBvhWidth][3];  // twice each used child's box centre
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a)
+      centre2[i][a] = static_cast<double>(node.lo[a][i]) + node.hi[a][i];
+  for (int octant = 0; octant < 8; ++octant) {
+    double key[kBvhWidth];
+    int slots[kBvhWidth];
+    for (int i = 0; i < kBvhWidth; ++i) {
+      slots[i] = i;
+      key[i] = std::numeric_limits<double>::infinity();  // unused slots go last
+      if (i >= n) continue;
+      key[i] = 0.0;
+      for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
+    }
+    // A stable insertion sort: std::stable_sort takes a heap buffer, and
+    // with its allocations it was half of the collapse's instructions.
+    for (int k = 1; k < kBvhWidth; ++k) {
+      const int slot = slots[k];
+      int j = k;
+      for (; j > 0 && key[slot] < key[slots[j - 1]]; --j) slots[j] = slots[j - 1];
+      slots[j] = slot;
+    }
+    std::uint32_t packed = 0;
+    for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
+    for (int byte = 0; byte < 3; ++byte)
+      node.order[octant][byte] = static_cast<std::uint8_t>(packed >> (8 * byte));
+  }
+}
+
 class Collapser {
  public:
   Collapser(const Bvh& binary, Bvh8& out)
       : in_(binary), out_(out), leaves_(binary.nodes.size(), 1) {
-    children_.reserve(binary.nodes.size() / 6 + 1);
-    counts_.reserve(binary.nodes.size() / 6 + 1);
     // Children come after their parent in the binary tree.
     for (std::size_t i = binary.nodes.size(); i-- > 0;) {
       const BvhNode& node = binary.nodes[i];
@@ -75,11 +108,6 @@ class Collapser {
                                 " primitives, more than a node can hold");
       out_.nodes[index].count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
     }
-    // The child orders are filled in afterwards, in parallel (setChildOrders).
-    std::array<std::uint32_t, kBvhWidth> binaryChildren{};
-    std::copy(children, children + n, binaryChildren.begin());
-    children_.push_back(binaryChildren);
-    counts_.push_back(static_cast<std::uint8_t>(n));
     // Interior children after the node itself (depth-first order).
     for (int i = 0; i < n; ++i)
       if (!in_.nodes[children[i]].isLeaf()) {
@@ -89,58 +117,12 @@ class Collapser {
     return index;
   }
 
-  // Fills in every node's child orders (see the overload below).
-  void setChildOrders() {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out_.nodes.size(), 256),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          setChildOrders(out_.nodes[i], children_[i].data(), counts_[i]);
-                      });
-  }
-
  private:
-  // Orders the used children of each octant by their box centres projected
-  // on the octant's diagonal: a direction-only estimate of which box a ray
-  // enters first, free of per-ray work.
-  void setChildOrders(Bvh8Node& node, const std::uint32_t* children, int n) const {
-    double centre2[kBvhWidth][3];  // twice each used child's box centre
-    for (int i = 0; i < n; ++i) {
-      const float* b = in_.nodes[children[i]].bounds;
-      for (int a = 0; a < 3; ++a) centre2[i][a] = static_cast<double>(b[a]) + b[a + 3];
-    }
-    for (int octant = 0; octant < 8; ++octant) {
-      double key[kBvhWidth];
-      int slots[kBvhWidth];
-      for (int i = 0; i < kBvhWidth; ++i) {
-        slots[i] = i;
-        key[i] = std::numeric_limits<double>::infinity();  // unused slots go last
-        if (i >= n) continue;
-        key[i] = 0.0;
-        for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
-      }
-      // A stable insertion sort: std::stable_sort takes a heap buffer, and
-      // with its allocations it was half of the collapse's instructions.
-      for (int k = 1; k < kBvhWidth; ++k) {
-        const int slot = slots[k];
-        int j = k;
-        for (; j > 0 && key[slot] < key[slots[j - 1]]; --j) slots[j] = slots[j - 1];
-        slots[j] = slot;
-      }
-      std::uint32_t packed = 0;
-      for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
-      for (int byte = 0; byte < 3; ++byte)
-        node.order[octant][byte] = static_cast<std::uint8_t>(packed >> (8 * byte));
-    }
-  }
-
   static constexpr float kEmptyLo = std::numeric_limits<float>::infinity();
   static constexpr float kEmptyHi = -std::numeric_limits<float>::infinity();
   const Bvh& in_;
   Bvh8& out_;
   std::vector<std::uint32_t> leaves_;  // leaves under each binary node
-  // Per 8-wide node, in node order: its binary children and their number.
-  std::vector<std::array<std::uint32_t, kBvhWidth>> children_;
-  std::vector<std::uint8_t> counts_;
 };
 
 }  // namespace
@@ -160,9 +142,14 @@ Bvh8 collapseToBvh8(const Bvh& binary) {
     return out;
   }
   out.nodes.reserve(binary.nodes.size() / 6 + 1);
-  Collapser collapser(binary, out);
-  collapser.node(0, 1);
-  collapser.setChildOrders();
+  Collapser(binary, out).node(0, 1);
+  // The child orders read only each node's own boxes, so they are filled
+  // in afterwards, in parallel.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.nodes.size(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i)
+                        setChildOrders(out.nodes[i]);
+                    });
   return out;
 }
 
