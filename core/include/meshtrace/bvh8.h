@@ -53,9 +53,9 @@ struct Bvh8 {
 };
 
 // Each node takes its binary node's two children, then repeatedly replaces
-// the interior child of largest surface area by its own two children while
-// there is room for eight. Throws std::length_error for a leaf larger than
-// kMaxBvh8Leaf.
+// an interior child by its own two children while there is room for eight:
+// first the widest child whose whole subtree still fits, else the widest.
+// Throws std::length_error for a leaf larger than kMaxBvh8Leaf.
 Bvh8 collapseToBvh8(const Bvh& binary);
 
 }  // namespace meshtrace

@@ -51,10 +51,10 @@ class SlabRay {
     originFar = _mm_sub_ps(o, shift);
     invNear = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 - pad.relative - 0x1p-19)));
     invFar = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19)));
-    // Signs, not comparisons: -0.0 goes with the negative side, as its
-    // reciprocal does.
+    // By the reciprocal's sign, so that -0.0 goes with the negative side,
+    // as its reciprocal does.
     negative_ = _mm_cmplt_ps(invNear, _mm_setzero_ps());
-    octant = _mm_movemask_ps(d) & 7;
+    octant = _mm_movemask_ps(negative_) & 7;
   }
 
   // Whether the ray meets the widened box lo-hi within [tMin, tMax]: the

@@ -21,7 +21,7 @@ class PrimitiveQuery;
 
 // Meshes with fewer triangles get no BVH: testing their few triangles after
 // the top-level box is as fast. Measured by `bench --crossover` (see
-// BENCHMARKS.md): a BVH gains nothing at 8 triangles and pays from 12 on.
+// BENCHMARKS.md): a BVH loses at 8 triangles and pays from 12 on.
 inline constexpr std::size_t kMinBvhTriangles = 12;
 
 // A mesh's BVH: 8-wide nodes whose leaves are triangle blocks.
