@@ -1,6 +1,7 @@
 #include "crossover.h"
 
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "meshtrace/mesh_generators.h"
@@ -10,8 +11,9 @@ namespace meshtrace::bench {
 
 namespace {
 
-// 10 x 10 tori of 2 * ring * tube triangles on the xz plane, seen from above.
-Scene toriScene(int ring, int tube) {
+// 10 x 10 small meshes on the xz plane, seen from above: flat squares of
+// 2 n^2 triangles (n x n grids) or tori of 2 * ring * tube triangles.
+Scene gridOfMeshes(const std::function<MeshData(const Vec3&)>& make) {
   Scene scene;
   CameraSpec cam;
   cam.eye = Vec3(13.5, 25.0, 40.0);
@@ -22,8 +24,8 @@ Scene toriScene(int ring, int tube) {
   scene.camera = Camera(cam);
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j)
-      scene.meshes.emplace_back("torus", makeTorus(Vec3(3.0 * i, 0.0, 3.0 * j), 1.0, 0.35, ring, tube),
-                                Shading::Flat, Material{});
+      scene.meshes.emplace_back("small", make(Vec3(3.0 * i, 0.0, 3.0 * j)), Shading::Flat,
+                                Material{});
   return scene;
 }
 
@@ -42,17 +44,23 @@ double primaryMrays(const Scene& scene, std::size_t minTriangles, const RaySet& 
 }  // namespace
 
 void printCrossover() {
-  std::printf("| triangles per mesh | Mrays/s, BVH per mesh | Mrays/s, no mesh BVH | BVH / none |\n"
-              "|---:|---:|---:|---:|\n");
-  const int sizes[][2] = {{2, 2}, {3, 2}, {4, 2}, {4, 3}, {4, 4}, {6, 4}, {8, 4}, {8, 8}};
-  for (const auto& [ring, tube] : sizes) {
-    const Scene scene = toriScene(ring, tube);
+  std::printf("| mesh | triangles per mesh | Mrays/s, BVH | Mrays/s, no BVH | BVH / none |\n"
+              "|---|---:|---:|---:|---:|\n");
+  const auto row = [](const char* shape, const Scene& scene) {
     const RaySet rays = primaryRays(scene);
     const double with = primaryMrays(scene, 0, rays);
     const double without = primaryMrays(scene, std::numeric_limits<std::size_t>::max(), rays);
-    std::printf("| %d | %.2f | %.2f | %.2f |\n", 2 * ring * tube, with, without, with / without);
+    std::printf("| %s | %zu | %.2f | %.2f | %.2f |\n", shape,
+                scene.meshes[0].triangles().size(), with, without, with / without);
     std::fflush(stdout);
-  }
+  };
+  for (int n : {1, 2})
+    row("square", gridOfMeshes([n](const Vec3& c) { return makeGrid(c, 2.0, n); }));
+  const int sizes[][2] = {{3, 2}, {4, 2}, {4, 3}, {4, 4}, {6, 4}, {8, 4}, {8, 8}};
+  for (const auto& [ring, tube] : sizes)
+    row("torus", gridOfMeshes([ring, tube](const Vec3& c) {
+          return makeTorus(c, 1.0, 0.35, ring, tube);
+        }));
 }
 
 }  // namespace meshtrace::bench

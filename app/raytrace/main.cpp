@@ -30,9 +30,11 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
   const auto start = std::chrono::steady_clock::now();
   const Image image = render(intersector, options.render.threads, &counters);
   const double renderMs = app::millisecondsSince(start);
-  if (const SceneBvh* bvh = intersector.bvh())
-    std::printf("built the BVH (%zu meshes, %zu objects on top) in %.1f ms\n",
-                bvh->stats().meshesWithBvh, bvh->stats().topLevelObjects, buildMs);
+  if (const SceneBvh* bvh = intersector.bvh()) {
+    const std::size_t meshes = bvh->stats().meshesWithBvh, top = bvh->stats().topLevelObjects;
+    std::printf("built the BVH (%zu mesh%s in the triangle BVH, %zu object%s on top) in %.1f ms\n",
+                meshes, meshes == 1 ? "" : "es", top, top == 1 ? "" : "s", buildMs);
+  }
   const TraceOptions& trace = options.render.trace;
   std::printf("rendered %dx%d with --accel %s --triangle %s --precision %s in %.1f ms\n",
               image.width, image.height, toString(trace.accel), toString(trace.triangle.test),

@@ -18,6 +18,7 @@
 #include <memory>
 
 #include "meshtrace/bvh.h"
+#include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
 
@@ -382,14 +383,14 @@ Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options) {
   return bvh;
 }
 
-Bvh buildBvh(std::span<const Vec3> vertices,
-             std::span<const std::array<std::uint32_t, 3>> triangles,
-             const BvhBuildOptions& options) {
+Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options) {
   Bvh bvh;
   if (triangles.empty()) return bvh;
   const auto boxOf = [&](std::size_t i) {
+    const TriangleSet::Member t = triangles[static_cast<std::uint32_t>(i)];
+    const auto& vertices = t.mesh->vertices();
     Aabb b;
-    for (std::uint32_t k : triangles[i]) b.extend(vertices[k]);
+    for (std::uint32_t k : t.mesh->triangles()[t.triangle]) b.extend(vertices[k]);
     return b;
   };
   Builder(triangles.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(triangles.size()));

@@ -1,6 +1,4 @@
-// Building the scene's two-level BVH: object boxes and per-mesh BVHs.
-#include <tbb/parallel_for.h>
-
+// Building the scene's two-level BVH: object boxes and the triangle BVH.
 #include <chrono>
 #include <cmath>
 
@@ -27,23 +25,29 @@ Aabb cylinderBox(const Cylinder& c) {
   return {c.center - half, c.center + half};
 }
 
-MeshBvh buildMeshBvh(const Mesh& mesh, const BvhBuildOptions& options) {
-  MeshBvh out;
-  out.tree = collapseToBvh8(buildBvh(mesh.vertices(), mesh.triangles(), options));
-  out.frame = blockFrame(mesh);
-  out.blocks = makeTriangleBlocks(mesh, out.frame, out.tree);
-  return out;
+void buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
+  out.tree = collapseToBvh8(buildBvh(out.triangles, options));
+  out.frame = blockFrame(out.triangles.bounds());
+  out.blocks = makeTriangleBlocks(out.triangles, out.frame, out.tree);
 }
 
 }  // namespace
 
 SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
-  meshBvhs_.resize(scene.meshes.size());
-  tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t i) {
-    if (scene.meshes[i].triangles().size() >= options.minMeshTriangles)
-      meshBvhs_[i] = buildMeshBvh(scene.meshes[i], options.mesh);
-  });
+  inMeshBvh_.resize(scene.meshes.size());
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    const Mesh& mesh = scene.meshes[i];
+    const std::size_t n = mesh.triangles().size();
+    inMeshBvh_[i] = n > 0 && n >= options.minMeshTriangles;
+    if (inMeshBvh_[i])
+      meshBvh_.triangles.add(mesh, static_cast<std::uint32_t>(i));
+    else if (n > 0)
+      stats_.leftOut.push_back("no BVH for " + mesh.file().filename().string() + ": " +
+                               std::to_string(n) + " triangles, under " +
+                               std::to_string(options.minMeshTriangles));
+  }
+  if (!meshBvh_.triangles.empty()) buildMeshBvh(options.mesh, meshBvh_);
 
   std::vector<Aabb> boxes;
   const auto add = [&](ObjectKind kind, std::size_t i, const Aabb& box) {
@@ -55,31 +59,19 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
   for (std::size_t i = 0; i < scene.cylinders.size(); ++i)
     add(ObjectKind::Cylinder, i, cylinderBox(scene.cylinders[i]));
   for (std::size_t i = 0; i < scene.meshes.size(); ++i)
-    if (!scene.meshes[i].triangles().empty()) add(ObjectKind::Mesh, i, scene.meshes[i].bounds());
+    if (!scene.meshes[i].triangles().empty() && !inMeshBvh_[i])
+      add(ObjectKind::Mesh, i, scene.meshes[i].bounds());
+  if (!meshBvh_.empty()) add(ObjectKind::Mesh, kMeshBvh, meshBvh_.triangles.bounds());
   top_ = collapseToBvh8(buildBvh(boxes, options.top));
   for (const Aabb& b : boxes)
     sceneScale_ = std::max({sceneScale_, maxAbsComponent(b.min), maxAbsComponent(b.max)});
 
   stats_.topLevelObjects = objects_.size();
   stats_.topLevelBytes = top_.bytes() + objects_.size() * sizeof(Object);
-  stats_.maxDepth = top_.depth;
-  int meshDepth = 0;
-  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-    const Mesh& mesh = scene.meshes[i];
-    const MeshBvh& bvh = meshBvhs_[i];
-    if (bvh.empty()) {
-      if (!mesh.triangles().empty())
-        stats_.leftOut.push_back("no BVH for " + mesh.file().filename().string() + ": " +
-                                 std::to_string(mesh.triangles().size()) + " triangles, under " +
-                                 std::to_string(options.minMeshTriangles));
-      continue;
-    }
-    ++stats_.meshesWithBvh;
-    stats_.trianglesInBvhs += mesh.triangles().size();
-    stats_.meshBvhBytes += bvh.bytes();
-    meshDepth = std::max(meshDepth, bvh.tree.depth);
-  }
-  stats_.maxDepth += meshDepth;
+  stats_.meshesWithBvh = meshBvh_.triangles.meshCount();
+  stats_.trianglesInBvhs = meshBvh_.triangles.size();
+  stats_.meshBvhBytes = meshBvh_.bytes();
+  stats_.maxDepth = top_.depth + meshBvh_.tree.depth;
   stats_.buildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

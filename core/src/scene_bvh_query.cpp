@@ -18,28 +18,65 @@ int laneCount(int mask) {
   return kCount[mask & 15];
 }
 
-// Calls exact(triangle) for each triangle of the block that the float filter
-// passes on, until one call returns true. Every lane counts as one triangle
-// test: those dropped here, the others in the exact test.
-// The exact test starts by reading the triangle's vertex indices from the
-// mesh (`triangles`), a cache miss on a large mesh; asking for them before
-// the filter runs overlaps that wait with it (knot1m's hitting primary
-// rays: about 880 ns -> 770 ns; no change on meshes that fit in cache).
-template <typename Exact>
+// Where the triangle of a block lane lives: its vertex-index row and its
+// (scene mesh, triangle) reference. With the meshes sharing one BVH, the
+// common case of a single mesh reads both straight off the lane's id; only
+// several meshes look the mesh up, chosen once per query rather than per
+// lane (the lookup on every lane cost fandisk's hitting rays 2%).
+class SoleMesh {
+ public:
+  explicit SoleMesh(const TriangleSet& set) {
+    const TriangleSet::Member first = set[0];
+    mesh_ = first.sceneIndex;
+    rows_ = first.mesh->triangles().data();
+  }
+  const TriangleIndices* row(std::uint32_t id) const { return rows_ + id; }
+  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, mesh_, id}; }
+
+ private:
+  std::uint32_t mesh_;
+  const TriangleIndices* rows_;
+};
+
+class ManyMeshes {
+ public:
+  explicit ManyMeshes(const TriangleSet& set) : set_(set) {}
+  const TriangleIndices* row(std::uint32_t id) const {
+    const TriangleSet::Member t = set_[id];
+    return t.mesh->triangles().data() + t.triangle;
+  }
+  PrimitiveRef ref(std::uint32_t id) const {
+    const TriangleSet::Member t = set_[id];
+    return {ObjectKind::Mesh, t.sceneIndex, t.triangle};
+  }
+
+ private:
+  const TriangleSet& set_;
+};
+
+// Calls exact(triangle) with the PrimitiveRef of each triangle of the block
+// that the float filter passes on, until one call returns true. Every lane
+// counts as one triangle test: those dropped here, the others in the exact
+// test.
+// The exact test starts by reading the triangle's vertex indices from its
+// mesh, a cache miss on a large mesh; asking for them before the filter
+// runs overlaps that wait with it (knot1m's hitting primary rays: about
+// 880 ns -> 770 ns; no change on meshes that fit in cache).
+template <typename Locate, typename Exact>
 bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
-                      const TriangleIndices* triangles, double tMin, double tMax,
-                      Counters& counters, Exact&& exact) {
+                      const Locate& locate, double tMin, double tMax, Counters& counters,
+                      Exact&& exact) {
   for (std::uint32_t k = 0; k < n; ++k)
-    _mm_prefetch(reinterpret_cast<const char*>(triangles + block.id[k]), _MM_HINT_T0);
+    _mm_prefetch(reinterpret_cast<const char*>(locate.row(block.id[k])), _MM_HINT_T0);
   int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
   counters.triangleTests += n - laneCount(mask);
   for (; mask; mask &= mask - 1)
-    if (exact(block.id[__builtin_ctz(static_cast<unsigned>(mask))])) return true;
+    if (exact(locate.ref(block.id[__builtin_ctz(static_cast<unsigned>(mask))]))) return true;
   return false;
 }
 
-// A mesh's BlockRay, made when the ray first reaches one of its blocks: most
-// rays that miss a mesh never do. (std::optional is not used because GCC
+// The triangle BVH's BlockRay, made when the ray first reaches one of its
+// blocks: most rays that miss the meshes never do. (std::optional is not used because GCC
 // zero-fills its storage up front with `rep stos`, which costs more than
 // the set-up itself.)
 class LazyBlockRay {
@@ -84,22 +121,26 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
   const double tMin = query.tMin();
   std::uint64_t visits = 0;
   const auto offerMesh = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {
-    const MeshBvh& bvh = meshBvhs_[mesh];
-    if (bvh.empty()) {
+    if (mesh != kMeshBvh) {
       const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
       for (std::uint32_t t = 0; t < count; ++t) query.offerTriangle(mesh, t, closest);
       return;
     }
-    LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
-    const TriangleIndices* triangles = scene_.meshes[mesh].triangles().data();
-    const auto offerBlock = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
-      forEachCandidate(blockRay.get(), bvh.blocks[block], n, triangles, tMin, closest.t(),
-                       counters, [&](std::uint32_t tri) {
-                         query.offerTriangle(mesh, tri, closest);
-                         return false;
-                       });
+    const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
+      const auto offerBlock = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
+        forEachCandidate(blockRay.get(), meshBvh_.blocks[block], n, locate, tMin, closest.t(),
+                         counters, [&](const PrimitiveRef& t) {
+                           query.offerTriangle(t.object, t.triangle, closest);
+                           return false;
+                         });
+      };
+      traverseClosest(meshBvh_.tree, ray, tMin, closest.t(), visits, offerBlock);
     };
-    traverseClosest(bvh.tree, ray, tMin, closest.t(), visits, offerBlock);
+    if (meshBvh_.triangles.meshCount() == 1)
+      traverse(SoleMesh(meshBvh_.triangles));
+    else
+      traverse(ManyMeshes(meshBvh_.triangles));
   };
   const auto offerObjects = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
     for (std::uint32_t k = first; k < first + n; ++k) {
@@ -121,21 +162,24 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
   const double tMin = query.tMin();
   std::uint64_t visits = 0;
   const auto meshBlocks = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {
-    const MeshBvh& bvh = meshBvhs_[mesh];
-    if (bvh.empty()) {
+    if (mesh != kMeshBvh) {
       const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
       for (std::uint32_t t = 0; t < count; ++t)
         if (query.triangleBlocks(mesh, t, tMax)) return true;
       return false;
     }
-    LazyBlockRay blockRay(query.ray(), bvh.frame, query.kernel());
-    const TriangleIndices* triangles = scene_.meshes[mesh].triangles().data();
-    const auto blockBlocks = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
-      return forEachCandidate(
-          blockRay.get(), bvh.blocks[block], n, triangles, tMin, tMax, counters,
-          [&](std::uint32_t tri) { return query.triangleBlocks(mesh, tri, tMax); });
+    const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
+      const auto blockBlocks = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
+        return forEachCandidate(blockRay.get(), meshBvh_.blocks[block], n, locate, tMin, tMax,
+                                counters, [&](const PrimitiveRef& t) {
+                                  return query.triangleBlocks(t.object, t.triangle, tMax);
+                                });
+      };
+      return traverseAny(meshBvh_.tree, ray, tMin, tMax, visits, blockBlocks);
     };
-    return traverseAny(bvh.tree, ray, tMin, tMax, visits, blockBlocks);
+    return meshBvh_.triangles.meshCount() == 1 ? traverse(SoleMesh(meshBvh_.triangles))
+                                               : traverse(ManyMeshes(meshBvh_.triangles));
   };
   const auto objectsBlock = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
     for (std::uint32_t k = first; k < first + n; ++k) {

@@ -1,4 +1,4 @@
-// Building the triangle blocks of a mesh BVH and preparing a ray for them.
+// Building the triangle blocks of the triangle BVH and preparing a ray for them.
 #include "meshtrace/triangle_block.h"
 
 #include <tbb/parallel_for.h>
@@ -7,12 +7,12 @@
 #include <cmath>
 
 #include "meshtrace/mesh.h"
+#include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
 
-BlockFrame blockFrame(const Mesh& mesh) {
+BlockFrame blockFrame(const Aabb& box) {
   BlockFrame frame;
-  const Aabb& box = mesh.bounds();
   if (box.empty()) return frame;
   frame.center = box.center();
   const double half = 0.5 * maxComponent(box.extent());
@@ -23,8 +23,8 @@ BlockFrame blockFrame(const Mesh& mesh) {
   return frame;
 }
 
-std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFrame& frame,
-                                               Bvh8& tree) {
+std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+                                               const BlockFrame& frame, Bvh8& tree) {
   struct Leaf {
     std::uint32_t first, count;
   };
@@ -40,8 +40,6 @@ std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFram
       }
   }
   std::vector<TriangleBlock4> blocks(leaves.size());
-  const auto& v = mesh.vertices();
-  const auto& tris = mesh.triangles();
   const auto local = [&](const Vec3& p) { return (p - frame.center) * frame.scale; };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 4096),
                     [&](const tbb::blocked_range<std::size_t>& r) {
@@ -54,7 +52,9 @@ std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFram
                             continue;
                           }
                           const std::uint32_t t = tree.order[leaves[k].first + lane];
-                          const TriangleIndices& idx = tris[t];
+                          const TriangleSet::Member member = triangles[t];
+                          const auto& v = member.mesh->vertices();
+                          const TriangleIndices& idx = member.mesh->triangles()[member.triangle];
                           const Vec3 a = local(v[idx[0]]);
                           const Vec3 e1 = (v[idx[1]] - v[idx[0]]) * frame.scale;
                           const Vec3 e2 = (v[idx[2]] - v[idx[0]]) * frame.scale;

@@ -70,7 +70,7 @@ Scene meshScene(std::vector<Mesh> meshes) {
 }
 
 // Spheres (two of them identical: a tie), cylinders, planes and meshes,
-// one of them (8 triangles) too small for a BVH.
+// one of them (2 triangles) too small for a BVH.
 Scene objectScene(std::mt19937_64& rng) {
   Scene scene;
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -86,7 +86,7 @@ Scene objectScene(std::mt19937_64& rng) {
   scene.meshes.push_back(makeMesh("ball", makeIcosphere(Vec3(0.3, 0.2, 0.1), 0.4, 2)));
   scene.meshes.push_back(makeMesh("cube", makeGriddedBox(Vec3(-0.5), Vec3(-0.2), 1)));
   scene.meshes.push_back(makeMesh("floor", makeGrid(Vec3(0.0, -0.5, 0.0), 1.5, 6)));
-  scene.meshes.push_back(makeMesh("square", makeGrid(Vec3(0.5, 0.6, -0.3), 0.4, 2)));
+  scene.meshes.push_back(makeMesh("square", makeGrid(Vec3(0.5, 0.6, -0.3), 0.4, 1)));
   return scene;
 }
 
@@ -260,6 +260,22 @@ TEST(BvhAgreesWithBruteForce, GeneratedMeshes) {
   expectAgreement("soup", compare(soup, 250000, 4));
 }
 
+// The meshes of a scene share one triangle BVH: a tie between two meshes
+// still goes to the lower mesh index, as in brute force, and a small mesh
+// far from a large one keeps its hits though the blocks' float frame is
+// sized for both.
+TEST(BvhAgreesWithBruteForce, MeshesSharingOneTree) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 2);
+  const Scene twins =
+      meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
+                 makeMesh("knot", makeTorusKnot(Vec3(0.5, 0.0, 0.0), 0.8, 2, 3, 0.2, 48, 6))});
+  const Scene apart = meshScene(
+      {makeMesh("ball", ball),
+       makeMesh("speck", makeTorusKnot(Vec3(1000.0, 0.0, 0.0), 0.01, 2, 3, 0.25, 48, 6))});
+  expectAgreement("twin meshes", compare(twins, 200000, 11));
+  expectAgreement("far speck", compare(apart, 200000, 12));
+}
+
 TEST(BvhAgreesWithBruteForce, ObjectsOfEveryKind) {
   std::mt19937_64 rng(7);
   expectAgreement("objects", compare(objectScene(rng), 200000, 5));
@@ -372,13 +388,28 @@ TEST(BvhBuild, CoincidentBoxesStillGiveSmallLeaves) {
 
 TEST(SceneBvh, SmallMeshesGetNoBvhAndAreSaidToBeLeftOut) {
   Scene scene;
-  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 2)));  // 8 triangles
+  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
   scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(3.0), 1.0, 2)));
   const SceneBvh bvh(scene);
-  EXPECT_TRUE(bvh.meshBvh(0).empty());
-  EXPECT_FALSE(bvh.meshBvh(1).empty());
+  EXPECT_FALSE(bvh.inMeshBvh(0));
+  EXPECT_TRUE(bvh.inMeshBvh(1));
   ASSERT_EQ(bvh.stats().leftOut.size(), 1u);
   EXPECT_NE(bvh.stats().leftOut[0].find("square.off"), std::string::npos);
+}
+
+// Every mesh large enough for a BVH is in the one triangle BVH, which the
+// top level holds as a single object beside the meshes left out.
+TEST(SceneBvh, LargeMeshesShareOneTriangleBvh) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 2)));
+  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
+  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(2.0), Vec3(3.0), 2)));
+  const SceneBvh bvh(scene);
+  EXPECT_EQ(bvh.stats().meshesWithBvh, 2u);
+  EXPECT_EQ(bvh.stats().trianglesInBvhs,
+            scene.meshes[0].triangles().size() + scene.meshes[2].triangles().size());
+  EXPECT_EQ(bvh.meshBvh().triangles.meshCount(), 2u);
+  EXPECT_EQ(bvh.stats().topLevelObjects, 2u);  // the triangle BVH and the square
 }
 
 // Nodes and triangle blocks together stay within 64 bytes per triangle on
@@ -389,13 +420,21 @@ TEST(SceneBvh, TakesAtMost64BytesPerTriangle) {
   scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 6)));  // 82k
   scene.meshes.push_back(
       makeMesh("knot.off", makeTorusKnot(Vec3(3.0), 1.0, 2, 3, 0.3, 600, 40)));  // 48k
-  const SceneBvh bvh(scene);
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const double perTriangle = static_cast<double>(bvh.meshBvh(m).bytes()) /
-                               static_cast<double>(scene.meshes[m].triangles().size());
-    std::printf("%s: %.1f bytes per triangle\n", scene.meshes[m].file().c_str(), perTriangle);
-    EXPECT_LE(perTriangle, 64.0) << scene.meshes[m].file();
+  const auto bytesPerTriangle = [](const Scene& s) {
+    const SceneBvh bvh(s);
+    return static_cast<double>(bvh.meshBvh().bytes()) /
+           static_cast<double>(bvh.stats().trianglesInBvhs);
+  };
+  for (const Mesh& mesh : scene.meshes) {
+    Scene alone;
+    alone.meshes.push_back(mesh);
+    const double perTriangle = bytesPerTriangle(alone);
+    std::printf("%s: %.1f bytes per triangle\n", mesh.file().c_str(), perTriangle);
+    EXPECT_LE(perTriangle, 64.0) << mesh.file();
   }
+  const double together = bytesPerTriangle(scene);
+  std::printf("both in one BVH: %.1f bytes per triangle\n", together);
+  EXPECT_LE(together, 64.0);
 }
 
 TEST(Accel, BvhIsTheDefaultAndParses) {

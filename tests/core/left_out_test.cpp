@@ -95,8 +95,8 @@ TEST(LeftOut, NoBvhForSmallMeshes) {
   const auto& items = intersector.bvh()->stats().leftOut;
   EXPECT_TRUE(listed(items, "no BVH for small.off"));
   EXPECT_FALSE(listed(items, "no BVH for large.off"));
-  EXPECT_TRUE(intersector.bvh()->meshBvh(0).empty());
-  EXPECT_FALSE(intersector.bvh()->meshBvh(1).empty());
+  EXPECT_FALSE(intersector.bvh()->inMeshBvh(0));
+  EXPECT_TRUE(intersector.bvh()->inMeshBvh(1));
 }
 
 TEST(LeftOut, OpenMeshCrossCheckNotRunUnlessAsked) {

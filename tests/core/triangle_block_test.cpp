@@ -11,6 +11,7 @@
 #include "meshtrace/bvh.h"
 #include "meshtrace/mesh.h"
 #include "meshtrace/mesh_generators.h"
+#include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
 namespace {
@@ -32,8 +33,10 @@ Blocks makeBlocks(MeshData data) {
     boxes.push_back(box);
   }
   b.tree = collapseToBvh8(buildBvh(boxes, {.leafBlock = 4}));
-  b.frame = blockFrame(b.mesh);
-  b.blocks = makeTriangleBlocks(b.mesh, b.frame, b.tree);
+  TriangleSet set;
+  set.add(b.mesh, 0);
+  b.frame = blockFrame(set.bounds());
+  b.blocks = makeTriangleBlocks(set, b.frame, b.tree);
   for (const TriangleBlock4& block : b.blocks) {
     int n = 0;
     while (n < 4 && block.id[n] != kNoTriangle) ++n;

@@ -1,8 +1,8 @@
 #pragma once
 // A bounding volume hierarchy over a set of primitive boxes: the layout and
-// its binned SAH build. Used once per large mesh (primitives = triangles) and
-// once per scene (primitives = spheres, cylinders and meshes).
-#include <array>
+// its binned SAH build. Used twice per scene: over the triangles of its
+// meshes, and over its objects (spheres, cylinders, small meshes and that
+// triangle BVH).
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -11,6 +11,8 @@
 #include "meshtrace/aabb.h"
 
 namespace meshtrace {
+
+class TriangleSet;
 
 // 32 bytes: a box in float, rounded outward so that it holds its primitives
 // exactly, and either two adjacent children or a range of primitives. The
@@ -51,12 +53,10 @@ struct BvhBuildOptions {
 // at most maxLeafSize primitives. Large nodes are binned and both subtrees
 // built in parallel. The tree shape does not depend on the thread count.
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
-// The same over a mesh's triangles, their boxes taken straight from the
-// vertices: no array of double boxes (48 bytes a triangle) to fill and
-// read back.
-Bvh buildBvh(std::span<const Vec3> vertices,
-             std::span<const std::array<std::uint32_t, 3>> triangles,
-             const BvhBuildOptions& options = {});
+// The same over the triangles of a set of meshes (primitive i = triangle i
+// of the set), their boxes taken straight from the vertices: no array of
+// double boxes (48 bytes a triangle) to fill and read back.
+Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options = {});
 
 // The largest depth a built tree can have (traversal stacks are this deep).
 inline constexpr int kMaxBvhDepth = 128;

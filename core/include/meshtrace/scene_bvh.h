@@ -1,8 +1,16 @@
 #pragma once
-// The two-level acceleration structure of a scene: a BVH per mesh large
-// enough to profit from one, and a top-level BVH over all bounded objects
-// (spheres, cylinders and meshes), so that 1,600 spheres cost about what one
-// mesh does. Infinite planes have no box and are tested apart.
+// The two-level acceleration structure of a scene: one BVH over the
+// triangles of every mesh large enough to profit from one, and a top-level
+// BVH over all bounded objects (spheres, cylinders, smaller meshes and that
+// triangle BVH), so that 1,600 spheres cost about what one mesh does.
+// Infinite planes have no box and are tested apart.
+//
+// The meshes share one triangle BVH rather than having one each: a ray
+// crossing several meshes then descends a single hierarchy, where the hit in
+// the nearer mesh culls the farther one's boxes at every level. Primary rays
+// on one thread against rtcIntersect1, median of five alternating runs:
+// rings (two interlocked meshes) 0.56x -> 0.62x, toon_faces (six meshes)
+// 0.64x -> 0.70x; single-mesh scenes unchanged (BENCHMARKS.md).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -13,20 +21,25 @@
 #include "meshtrace/counters.h"
 #include "meshtrace/scene.h"
 #include "meshtrace/triangle_block.h"
+#include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
 
 class ClosestHit;
 class PrimitiveQuery;
 
-// Meshes with fewer triangles get no BVH: testing their few triangles after
-// the top-level box is as fast. Measured by `bench --crossover` (see
-// BENCHMARKS.md): a BVH loses at 8 triangles and pays from 12 on.
-inline constexpr std::size_t kMinBvhTriangles = 12;
+// Meshes with fewer triangles stay out of the triangle BVH: testing their few
+// triangles after their top-level box is faster. Measured by
+// `bench --crossover` (see BENCHMARKS.md) on 100 meshes of n triangles: with
+// all of them in the shared BVH, 2-triangle squares lose (0.88-0.90x) and
+// 8-triangle ones gain (1.10-1.12x).
+inline constexpr std::size_t kMinBvhTriangles = 8;
 
-// A mesh's BVH: 8-wide nodes whose leaves are triangle blocks.
+// The BVH over the triangles of a set of meshes: 8-wide nodes whose leaves
+// are triangle blocks.
 struct MeshBvh {
-  Bvh8 tree;  // a leaf's `first` is its block index
+  TriangleSet triangles;  // what a block lane's id refers to
+  Bvh8 tree;              // a leaf's `first` is its block index
   std::vector<TriangleBlock4> blocks;
   BlockFrame frame;
 
@@ -46,12 +59,12 @@ struct SceneBvhOptions {
 
 struct SceneBvhStats {
   double buildSeconds = 0.0;
-  std::size_t meshesWithBvh = 0;
+  std::size_t meshesWithBvh = 0;  // meshes whose triangles are in the triangle BVH
   std::size_t trianglesInBvhs = 0;
-  std::size_t meshBvhBytes = 0;  // nodes and triangle blocks of all mesh BVHs
+  std::size_t meshBvhBytes = 0;  // nodes and triangle blocks of the triangle BVH
   std::size_t topLevelObjects = 0;
   std::size_t topLevelBytes = 0;
-  int maxDepth = 0;              // top level plus the deepest mesh BVH
+  int maxDepth = 0;              // top level plus the triangle BVH
   std::vector<std::string> leftOut;  // meshes too small for a BVH, and why
 };
 
@@ -65,8 +78,10 @@ class SceneBvh {
   bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
 
   const SceneBvhStats& stats() const { return stats_; }
-  // The BVH of mesh `i`; empty when the mesh is too small to have one.
-  const MeshBvh& meshBvh(std::size_t i) const { return meshBvhs_[i]; }
+  // The triangle BVH, over the meshes large enough for one.
+  const MeshBvh& meshBvh() const { return meshBvh_; }
+  // Whether mesh `i`'s triangles are in it (else the mesh is too small).
+  bool inMeshBvh(std::size_t i) const { return inMeshBvh_[i]; }
   const Bvh8& topLevel() const { return top_; }
 
  private:
@@ -74,11 +89,13 @@ class SceneBvh {
 
   struct Object {
     ObjectKind kind;
-    std::uint32_t index;
+    std::uint32_t index;  // kMeshBvh for the triangle BVH (kind Mesh)
   };
+  static constexpr std::uint32_t kMeshBvh = 0xffffffffu;
 
   const Scene& scene_;
-  std::vector<MeshBvh> meshBvhs_;
+  MeshBvh meshBvh_;
+  std::vector<bool> inMeshBvh_;
   std::vector<Object> objects_;  // top-level primitives
   Bvh8 top_;
   double sceneScale_ = 0.0;  // largest coordinate of a bounded object

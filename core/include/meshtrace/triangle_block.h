@@ -6,7 +6,7 @@
 // That test is a conservative filter, not the answer: it rejects a triangle
 // only when its error bound proves that the exact kernel (triangle.h) would
 // reject it too; every other triangle goes on to the exact kernel, which
-// alone decides hits and their t. So a mesh BVH finds exactly what brute
+// alone decides hits and their t. So the triangle BVH finds exactly what brute
 // force finds, while most triangles cost a quarter of one float test.
 #include <emmintrin.h>
 #include <xmmintrin.h>
@@ -21,11 +21,11 @@
 
 namespace meshtrace {
 
-class Mesh;
+class TriangleSet;
 
-// Coordinates are stored relative to the mesh's box centre and scaled by a
-// power of two so the mesh fits in [-1, 1]^3: float then keeps its full
-// relative precision however far the mesh is from the world origin, and
+// Coordinates are stored relative to the triangles' box centre and scaled by
+// a power of two so the box fits in [-1, 1]^3: float then keeps its full
+// relative precision however far the meshes are from the world origin, and
 // the scaling itself is exact.
 struct BlockFrame {
   Vec3 center{0.0};
@@ -38,19 +38,20 @@ struct alignas(16) TriangleBlock4 {
   float v0[3][4];  // [axis][lane], local coordinates
   float e1[3][4];  // v1 - v0 and v2 - v0, each rounded once from double
   float e2[3][4];
-  std::uint32_t id[4];  // triangle index in the mesh
+  std::uint32_t id[4];  // triangle id in the TriangleSet the blocks were made from
 };
 static_assert(sizeof(TriangleBlock4) == 160);
 inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 
-// Replaces each leaf of `tree` (at most four triangles, from tree.order) by
-// one block: afterwards a leaf's `first` is its block index, and tree.order
-// is released.
-std::vector<TriangleBlock4> makeTriangleBlocks(const Mesh& mesh, const BlockFrame& frame,
-                                               Bvh8& tree);
-BlockFrame blockFrame(const Mesh& mesh);
+// Replaces each leaf of `tree` (at most four triangles of `triangles`, from
+// tree.order) by one block: afterwards a leaf's `first` is its block index,
+// and tree.order is released. A lane's id is its triangle's id in the set.
+std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+                                               const BlockFrame& frame, Bvh8& tree);
+// The frame that fits `box` (the set's bounds) in [-1, 1]^3.
+BlockFrame blockFrame(const Aabb& box);
 
-// One ray prepared for the blocks of one mesh.
+// One ray prepared for the blocks made in one frame.
 class BlockRay {
  public:
   BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel);
