@@ -17,6 +17,7 @@
 #include "meshtrace/bvh8.h"
 #include "meshtrace/intersector.h"
 #include "meshtrace/mesh_generators.h"
+#include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
 namespace {
@@ -296,16 +297,18 @@ TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
 
 // Structure: every primitive in exactly one leaf, every box inside its
 // parent's, every primitive inside its leaf's box.
+// Whether box b lies within a node's float bounds (min x y z, max x y z).
+bool inside(const Aabb& b, const float* n) {
+  return n[0] <= b.min.x && n[1] <= b.min.y && n[2] <= b.min.z && n[3] >= b.max.x &&
+         n[4] >= b.max.y && n[5] >= b.max.z;
+}
+
 TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
   const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12);
   const std::vector<Aabb> boxes = triangleBoxes(knot);
   const Bvh bvh = buildBvh(boxes);
   ASSERT_FALSE(bvh.empty());
   EXPECT_LE(bvh.depth, kMaxBvhDepth);
-  const auto inside = [](const Aabb& b, const float* n) {
-    return n[0] <= b.min.x && n[1] <= b.min.y && n[2] <= b.min.z && n[3] >= b.max.x &&
-           n[4] >= b.max.y && n[5] >= b.max.z;
-  };
   std::vector<int> seen(boxes.size(), 0);
   for (const BvhNode& node : bvh.nodes) {
     if (node.isLeaf()) {
@@ -326,6 +329,48 @@ TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
 }
 
 // Collapsing keeps every leaf, and every child box holds its node's boxes.
+// Several meshes: their trees are built apart and joined under one over
+// the meshes' boxes. Walking the joined tree from its root reaches every
+// triangle of the set exactly once, each inside its leaf's box, every box
+// inside its parent's.
+TEST(BvhBuild, JoinedMeshTreesReachEveryTriangleOnce) {
+  const std::vector<Mesh> meshes = {
+      makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 200, 12)),
+      makeMesh("ball", makeIcosphere(Vec3(0.5, 0.0, 0.0), 0.7, 3)),  // overlaps the knot
+      makeMesh("box", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3)),
+      makeMesh("twin", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3))};  // the same box again
+  TriangleSet set;
+  for (std::uint32_t i = 0; i < meshes.size(); ++i) set.add(meshes[i], i);
+  const Bvh bvh = buildBvh(set, {.leafBlock = 4});
+  ASSERT_FALSE(bvh.empty());
+  EXPECT_LE(bvh.depth, kMaxBvhDepth);
+  std::vector<int> seen(set.size(), 0);
+  std::vector<std::uint32_t> stack = {0};
+  while (!stack.empty()) {
+    const BvhNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    if (node.isLeaf()) {
+      EXPECT_LE(node.count, 4u);
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+        const std::uint32_t id = bvh.order[k];
+        ASSERT_LT(id, set.size());
+        ++seen[id];
+        const TriangleSet::Member t = set[id];
+        Aabb box;
+        for (std::uint32_t v : t.mesh->triangles()[t.triangle]) box.extend(t.mesh->vertices()[v]);
+        EXPECT_TRUE(inside(box, node.bounds)) << "triangle " << id;
+      }
+      continue;
+    }
+    for (std::uint32_t c : {node.first, node.first + 1}) {
+      const float* b = bvh.nodes[c].bounds;
+      EXPECT_TRUE(inside({Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])}, node.bounds));
+      stack.push_back(c);
+    }
+  }
+  for (std::size_t id = 0; id < seen.size(); ++id) ASSERT_EQ(seen[id], 1) << "triangle " << id;
+}
+
 TEST(BvhBuild, EightWideTreeKeepsEveryLeafInsideItsBox) {
   const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
   const std::vector<Aabb> boxes = triangleBoxes(knot);

@@ -55,7 +55,9 @@ struct BvhBuildOptions {
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
 // The same over the triangles of a set of meshes (primitive i = triangle i
 // of the set), their boxes taken straight from the vertices: no array of
-// double boxes (48 bytes a triangle) to fill and read back.
+// double boxes (48 bytes a triangle) to fill and read back. With several
+// meshes, each mesh's tree is built on its own, in parallel, and the trees
+// are joined under a tree over the meshes' boxes.
 Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options = {});
 
 // The largest depth a built tree can have (traversal stacks are this deep).

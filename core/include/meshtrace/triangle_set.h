@@ -30,6 +30,10 @@ class TriangleSet {
   std::size_t meshCount() const { return meshes_.size(); }
   const Aabb& bounds() const { return bounds_; }
 
+  // The k-th mesh alone, and the id its first triangle has in this set.
+  TriangleSet part(std::size_t k) const;
+  std::uint32_t firstId(std::size_t k) const { return first_[k]; }
+
   // Triangle `id` of the set (0 <= id < size()).
   Member operator[](std::uint32_t id) const {
     if (meshes_.size() == 1) return {meshes_[0], sceneIndex_[0], id};
