@@ -31,8 +31,8 @@ class PrimitiveQuery;
 // Meshes with fewer triangles stay out of the triangle BVH: testing their few
 // triangles after their top-level box is faster. Measured by
 // `bench --crossover` (see BENCHMARKS.md) on 100 meshes of n triangles: with
-// all of them in the shared BVH, 2-triangle squares lose (0.88-0.90x) and
-// 8-triangle ones gain (1.10-1.12x).
+// all of them in the shared BVH, 2-triangle squares lose (0.86-0.94x) and
+// 8-triangle ones gain (1.05-1.06x).
 inline constexpr std::size_t kMinBvhTriangles = 8;
 
 // The BVH over the triangles of a set of meshes: 8-wide nodes whose leaves
