@@ -76,9 +76,9 @@ bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uin
 }
 
 // The triangle BVH's BlockRay, made when the ray first reaches one of its
-// blocks: most rays that miss the meshes never do. (std::optional is not used because GCC
-// zero-fills its storage up front with `rep stos`, which costs more than
-// the set-up itself.)
+// blocks: most rays that miss the meshes never do. (std::optional is not
+// used because GCC zero-fills its storage up front with `rep stos`, which
+// costs more than the set-up itself.)
 class LazyBlockRay {
  public:
   LazyBlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel)

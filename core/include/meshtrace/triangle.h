@@ -51,7 +51,7 @@ class TriangleRay {
   bool intersect(const Vec3& a, const Vec3& b, const Vec3& c, double tMin, double tMax,
                  TriangleHit& out) const;
 
-  // Per-ray constants of one precision (defined in triangle_kernels.h).
+  // Per-ray constants of one precision (filled in triangle_kernels.cpp).
   template <typename Real>
   struct Setup {
     glm::vec<3, Real> origin, direction;
