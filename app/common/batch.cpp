@@ -4,12 +4,24 @@
 #include <chrono>
 #include <cstdio>
 #include <new>
+#include <stdexcept>
 #include <system_error>
 
 #include "meshtrace/input_error.h"
+#include "meshtrace/image.h"
 #include "meshtrace/scene_parser.h"
 
 namespace meshtrace::app {
+
+bool imageDestinationUsable(const std::filesystem::path& path) {
+  try {
+    checkImageDestination(path);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return false;
+  }
+  return true;
+}
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

@@ -29,6 +29,11 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
                   const std::string& prefix, const std::function<bool(const Scene&)>& wanted,
                   const std::function<bool(const Scene&, const std::filesystem::path&)>& job);
 
+// Whether an image could be written to `path` (checkImageDestination);
+// prints the error if not. Tools call it before loading and rendering, so
+// that neither is spent on an output that cannot be written.
+bool imageDestinationUsable(const std::filesystem::path& path);
+
 // Milliseconds since `start`, for timing lines.
 double millisecondsSince(std::chrono::steady_clock::time_point start);
 

@@ -43,12 +43,16 @@ int main(int argc, char** argv) {
     }
     return app::runOverFolder(
         args.size() > 0 ? args[0] : "scenes", args.size() > 1 ? args[1] : "results", "debug_aabb_",
-        [](const Scene& s) { return !s.meshes.empty(); }, writeDebugImage);
+        [](const Scene& s) { return !s.meshes.empty(); },
+        [](const Scene& s, const std::filesystem::path& out) {
+          return app::imageDestinationUsable(out) && writeDebugImage(s, out);
+        });
   }
   if (args.size() != 2) {
     std::fprintf(stderr, "error: expected SCENE.sce OUT.png (or --all)\n%s", cli.help().c_str());
     return 2;
   }
+  if (!app::imageDestinationUsable(args[1])) return 1;
   const auto scene = app::loadAndDescribe(args[0]);
   if (!scene) return 1;
   return writeDebugImage(*scene, args[1]) ? 0 : 1;

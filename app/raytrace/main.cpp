@@ -123,13 +123,14 @@ int main(int argc, char** argv) {
     return app::runOverFolder(
         dir, outDir, "", [](const Scene&) { return true; },
         [&](const Scene& scene, const std::filesystem::path& out) {
-          return renderToFile(scene, out, options);
+          return app::imageDestinationUsable(out) && renderToFile(scene, out, options);
         });
   }
   if (args.size() != 2) {
     std::fprintf(stderr, "error: expected SCENE.sce OUT.png (or --all)\n%s", cli.help().c_str());
     return 2;
   }
+  if (!app::imageDestinationUsable(args[1])) return 1;
   const auto scene = app::loadAndDescribe(args[0]);
   if (!scene) return 1;
   return renderToFile(*scene, args[1], options) ? 0 : 1;

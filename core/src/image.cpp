@@ -50,6 +50,15 @@ std::vector<std::uint8_t> encodePpm(const Image8& image) {
   return out;
 }
 
+bool knownType(const std::string& ext) {
+  return ext == ".png" || ext == ".bmp" || ext == ".ppm" || ext == ".jpg" || ext == ".jpeg";
+}
+
+[[noreturn]] void throwUnknownType(const std::filesystem::path& path, const std::string& ext) {
+  throw std::runtime_error(path.string() + ": unknown image type '" + ext +
+                           "' (use .png, .bmp, .ppm or .jpg)");
+}
+
 // The file's bytes for the type named by `ext`. Encoding in memory and
 // writing separately lets every write error be seen: stb's file writers
 // ignore failed writes and report success for a truncated file.
@@ -72,8 +81,7 @@ std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
       throw std::runtime_error(path.string() + ": " + e.what());
     }
   } else {
-    throw std::runtime_error(path.string() + ": unknown image type '" + ext +
-                             "' (use .png, .bmp, .ppm or .jpg)");
+    throwUnknownType(path, ext);
   }
   if (!ok) throw std::runtime_error(path.string() + ": cannot encode the image");
   return bytes;
@@ -111,6 +119,25 @@ void writeImage(const Image8& image, const std::filesystem::path& path) {
     std::filesystem::remove(tmp, ec);
     throw std::runtime_error(path.string() + ": cannot write the image file (" + reason + ")");
   }
+}
+
+void checkImageDestination(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (!knownType(ext)) throwUnknownType(path, ext);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(path.string() + ": is a folder, not an image file");
+  const std::filesystem::path folder =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::exists(folder, ec))
+    throw std::runtime_error(path.string() + ": cannot write the image file (no folder " +
+                             folder.string() + ")");
+  if (!std::filesystem::is_directory(folder, ec))
+    throw std::runtime_error(path.string() + ": cannot write the image file (" +
+                             folder.string() + " is not a folder)");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw std::runtime_error(path.string() + ": cannot write the image file (folder " +
+                             folder.string() + " is not writable)");
 }
 
 Image8 readImage(const std::filesystem::path& path) {

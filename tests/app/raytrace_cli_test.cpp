@@ -82,31 +82,43 @@ TEST(RaytraceCli, WarnsButRendersWhenUpIsParallelToTheView) {
   EXPECT_EQ(readImage(dir / "out.png").width, 8);
 }
 
+// An output that cannot be written is refused before the scene is loaded
+// and rendered, not after a long render.
+void expectRefusedBeforeRendering(const test::ToolResult& r) {
+  EXPECT_EQ(r.out.find("loaded"), std::string::npos) << test::describe(r);
+  EXPECT_EQ(r.out.find("rendered"), std::string::npos) << test::describe(r);
+}
+
 TEST(RaytraceCli, RefusesAnOutputInAMissingFolder) {
   const auto dir = folderWithGoodScene();
-  test::expectRefusal(raytraceTool(), renderArgs(dir, "missing/out.png"), dir, {"out.png"},
-                      dir / "missing" / "out.png");
+  const auto r = test::expectRefusal(raytraceTool(), renderArgs(dir, "missing/out.png"), dir,
+                                     {"out.png", "missing"}, dir / "missing" / "out.png");
+  expectRefusedBeforeRendering(r);
 }
 
 TEST(RaytraceCli, RefusesAnOutputPathThatIsAFolder) {
   const auto dir = folderWithGoodScene();
   std::filesystem::create_directory(dir / "out.png");
-  test::expectRefusal(raytraceTool(), renderArgs(dir, "out.png"), dir, {"out.png"}, dir / "out.png");
+  const auto r = test::expectRefusal(raytraceTool(), renderArgs(dir, "out.png"), dir,
+                                     {"out.png", "folder"}, dir / "out.png");
+  expectRefusedBeforeRendering(r);
   EXPECT_TRUE(std::filesystem::is_directory(dir / "out.png"));
 }
 
 TEST(RaytraceCli, RefusesAnOutputBelowARegularFile) {
   const auto dir = folderWithGoodScene();
   test::writeFile(dir / "file", "x");
-  test::expectRefusal(raytraceTool(), renderArgs(dir, "file/out.png"), dir, {"out.png"},
-                      dir / "file");
+  const auto r = test::expectRefusal(raytraceTool(), renderArgs(dir, "file/out.png"), dir,
+                                     {"out.png", "not a folder"}, dir / "file");
+  expectRefusedBeforeRendering(r);
 }
 
 TEST(RaytraceCli, RefusesAnUnknownImageTypeLeavingTheOldFile) {
   const auto dir = folderWithGoodScene();
   test::writeFile(dir / "out.gif", test::kOldOutput);
-  test::expectRefusal(raytraceTool(), renderArgs(dir, "out.gif"), dir, {"out.gif", "image type"},
-                      dir / "out.gif");
+  const auto r = test::expectRefusal(raytraceTool(), renderArgs(dir, "out.gif"), dir,
+                                     {"out.gif", "image type"}, dir / "out.gif");
+  expectRefusedBeforeRendering(r);
 }
 
 TEST(RaytraceCli, RefusesAReadOnlyFolderLeavingTheOldFile) {

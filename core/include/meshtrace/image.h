@@ -43,6 +43,11 @@ Image8 quantize(const Image& image);
 // `path` and renames it into place, so a failure leaves any existing file
 // untouched. Throws std::runtime_error naming the path on failure.
 void writeImage(const Image8& image, const std::filesystem::path& path);
+// Throws std::runtime_error naming the path if writeImage could not write
+// there for a reason known before any image exists: an unknown image type,
+// a folder in the way, or a missing or read-only parent folder. Lets a long
+// render be refused before it starts rather than after.
+void checkImageDestination(const std::filesystem::path& path);
 // Throws std::runtime_error naming the path if it cannot be read.
 Image8 readImage(const std::filesystem::path& path);
 
