@@ -434,10 +434,11 @@ Bvh join(const Bvh& top, std::span<const Bvh> parts, std::span<const std::uint32
 }  // namespace
 
 // Several meshes: each mesh's tree is built on its own, in parallel, and
-// the trees joined under one over the meshes' boxes. One SAH build over all
-// the triangles gave the same ray speed on the seed scenes but took longer
-// (toon_faces' six meshes: 12-14 ms against 9.8 ms), its first levels
-// binning the whole set on two cores.
+// the trees joined under one over the meshes' boxes (whose leaves hold one
+// mesh each: with maxLeafSize 1, only single primitives become leaves). One
+// SAH build over all the triangles gave the same ray speed on the seed
+// scenes but took longer (toon_faces' six meshes: 12-14 ms against 11 ms),
+// its first levels binning the whole set on two cores.
 Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options) {
   const std::size_t meshes = triangles.meshCount();
   if (meshes <= 1) return buildOneMesh(triangles, options);
