@@ -97,7 +97,7 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
     }
     if (!wanted(*scene)) continue;
     const auto out = outDir / (prefix + file.stem().string() + ".png");
-    if (job(*scene, out)) ++done;
+    if (imageDestinationUsable(out) && job(*scene, out)) ++done;
     else ++failures;
   }
   std::printf("%d scenes written to %s, %d failed\n", done, outDir.string().c_str(), failures);

@@ -23,8 +23,9 @@ std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
 std::optional<Scene> loadAndDescribe(const std::filesystem::path& file);
 
 // Runs `job(scene, outputPath)` for each scene under `dir` that `wanted`
-// accepts, writing to outDir/<prefix><stem>.png. Returns the process exit
-// code: 0 if every scene succeeded.
+// accepts, writing to outDir/<prefix><stem>.png once that path is known to
+// be writable (imageDestinationUsable). Returns the process exit code: 0 if
+// every scene succeeded.
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
                   const std::string& prefix, const std::function<bool(const Scene&)>& wanted,
                   const std::function<bool(const Scene&, const std::filesystem::path&)>& job);

@@ -43,10 +43,7 @@ int main(int argc, char** argv) {
     }
     return app::runOverFolder(
         args.size() > 0 ? args[0] : "scenes", args.size() > 1 ? args[1] : "results", "debug_aabb_",
-        [](const Scene& s) { return !s.meshes.empty(); },
-        [](const Scene& s, const std::filesystem::path& out) {
-          return app::imageDestinationUsable(out) && writeDebugImage(s, out);
-        });
+        [](const Scene& s) { return !s.meshes.empty(); }, writeDebugImage);
   }
   if (args.size() != 2) {
     std::fprintf(stderr, "error: expected SCENE.sce OUT.png (or --all)\n%s", cli.help().c_str());

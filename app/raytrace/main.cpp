@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     return app::runOverFolder(
         dir, outDir, "", [](const Scene&) { return true; },
         [&](const Scene& scene, const std::filesystem::path& out) {
-          return app::imageDestinationUsable(out) && renderToFile(scene, out, options);
+          return renderToFile(scene, out, options);
         });
   }
   if (args.size() != 2) {

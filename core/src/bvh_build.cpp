@@ -385,14 +385,13 @@ Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options) {
 
 namespace {
 
-Bvh buildOneMesh(const TriangleSet& triangles, const BvhBuildOptions& options) {
+Bvh buildOneMesh(const Mesh& mesh, const BvhBuildOptions& options) {
   Bvh bvh;
+  const auto& triangles = mesh.triangles();
   if (triangles.empty()) return bvh;
   const auto boxOf = [&](std::size_t i) {
-    const TriangleSet::Member t = triangles[static_cast<std::uint32_t>(i)];
-    const auto& vertices = t.mesh->vertices();
     Aabb b;
-    for (std::uint32_t k : t.mesh->triangles()[t.triangle]) b.extend(vertices[k]);
+    for (std::uint32_t k : triangles[i]) b.extend(mesh.vertices()[k]);
     return b;
   };
   Builder(triangles.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(triangles.size()));
@@ -441,14 +440,14 @@ Bvh join(const Bvh& top, std::span<const Bvh> parts, std::span<const std::uint32
 // its first levels binning the whole set on two cores.
 Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options) {
   const std::size_t meshes = triangles.meshCount();
-  if (meshes <= 1) return buildOneMesh(triangles, options);
+  if (meshes == 0) return {};
+  if (meshes == 1) return buildOneMesh(triangles.mesh(0), options);
   std::vector<Bvh> parts(meshes);
   std::vector<Aabb> boxes(meshes);
   std::vector<std::uint32_t> idOffset(meshes);
   tbb::parallel_for(std::size_t(0), meshes, [&](std::size_t k) {
-    const TriangleSet part = triangles.part(k);
-    parts[k] = buildOneMesh(part, options);
-    boxes[k] = part.bounds();
+    parts[k] = buildOneMesh(triangles.mesh(k), options);
+    boxes[k] = triangles.mesh(k).bounds();
     idOffset[k] = triangles.firstId(k);
   });
   const Bvh top = buildBvh(boxes, {.bins = options.bins, .maxLeafSize = 1,

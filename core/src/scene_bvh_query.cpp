@@ -41,10 +41,7 @@ class SoleMesh {
 class ManyMeshes {
  public:
   explicit ManyMeshes(const TriangleSet& set) : set_(set) {}
-  const TriangleIndices* row(std::uint32_t id) const {
-    const TriangleSet::Member t = set_[id];
-    return t.mesh->triangles().data() + t.triangle;
-  }
+  const TriangleIndices* row(std::uint32_t id) const { return &set_[id].indices(); }
   PrimitiveRef ref(std::uint32_t id) const {
     const TriangleSet::Member t = set_[id];
     return {ObjectKind::Mesh, t.sceneIndex, t.triangle};
@@ -53,6 +50,12 @@ class ManyMeshes {
  private:
   const TriangleSet& set_;
 };
+
+// Calls visit with the locator that fits `set` (see above).
+template <typename Visit>
+[[gnu::always_inline]] inline auto withLocator(const TriangleSet& set, Visit&& visit) {
+  return set.meshCount() == 1 ? visit(SoleMesh(set)) : visit(ManyMeshes(set));
+}
 
 // Calls exact(triangle) with the PrimitiveRef of each triangle of the block
 // that the float filter passes on, until one call returns true. Every lane
@@ -137,10 +140,7 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
       };
       traverseClosest(meshBvh_.tree, ray, tMin, closest.t(), visits, offerBlock);
     };
-    if (meshBvh_.triangles.meshCount() == 1)
-      traverse(SoleMesh(meshBvh_.triangles));
-    else
-      traverse(ManyMeshes(meshBvh_.triangles));
+    withLocator(meshBvh_.triangles, traverse);
   };
   const auto offerObjects = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
     for (std::uint32_t k = first; k < first + n; ++k) {
@@ -178,8 +178,7 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
       };
       return traverseAny(meshBvh_.tree, ray, tMin, tMax, visits, blockBlocks);
     };
-    return meshBvh_.triangles.meshCount() == 1 ? traverse(SoleMesh(meshBvh_.triangles))
-                                               : traverse(ManyMeshes(meshBvh_.triangles));
+    return withLocator(meshBvh_.triangles, traverse);
   };
   const auto objectsBlock = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
     for (std::uint32_t k = first; k < first + n; ++k) {

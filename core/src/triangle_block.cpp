@@ -54,7 +54,7 @@ std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
                           const std::uint32_t t = tree.order[leaves[k].first + lane];
                           const TriangleSet::Member member = triangles[t];
                           const auto& v = member.mesh->vertices();
-                          const TriangleIndices& idx = member.mesh->triangles()[member.triangle];
+                          const TriangleIndices& idx = member.indices();
                           const Vec3 a = local(v[idx[0]]);
                           const Vec3 e1 = (v[idx[1]] - v[idx[0]]) * frame.scale;
                           const Vec3 e2 = (v[idx[2]] - v[idx[0]]) * frame.scale;

@@ -15,10 +15,4 @@ void TriangleSet::add(const Mesh& mesh, std::uint32_t sceneIndex) {
   bounds_.extend(mesh.bounds());
 }
 
-TriangleSet TriangleSet::part(std::size_t k) const {
-  TriangleSet one;
-  one.add(*meshes_[k], sceneIndex_[k]);
-  return one;
-}
-
 }  // namespace meshtrace

@@ -20,6 +20,8 @@ class TriangleSet {
     const Mesh* mesh;
     std::uint32_t sceneIndex;
     std::uint32_t triangle;
+
+    const TriangleIndices& indices() const { return mesh->triangles()[triangle]; }
   };
 
   // Appends the triangles of `mesh`, scene mesh number `sceneIndex`.
@@ -30,8 +32,8 @@ class TriangleSet {
   std::size_t meshCount() const { return meshes_.size(); }
   const Aabb& bounds() const { return bounds_; }
 
-  // The k-th mesh alone, and the id its first triangle has in this set.
-  TriangleSet part(std::size_t k) const;
+  // The k-th mesh added, and the id its first triangle has in this set.
+  const Mesh& mesh(std::size_t k) const { return *meshes_[k]; }
   std::uint32_t firstId(std::size_t k) const { return first_[k]; }
 
   // Triangle `id` of the set (0 <= id < size()).
