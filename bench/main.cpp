@@ -117,7 +117,7 @@ auto oursPrimary(const SceneIntersector& is, const RaySet& primary) {
 auto oursShadow(const SceneIntersector& is, const RaySet& shadow) {
   return [&is, &shadow](std::size_t i) {
     Counters c;
-    is.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c);
+    is.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c, shadow.startOf(i));
   };
 }
 
@@ -208,8 +208,8 @@ void verify(const SceneIntersector& bvh, const SceneIntersector& none, const Ray
   }
   for (std::size_t i = 0; i < shadow.rays.size(); i += stride) {
     ++f.verifiedRays;
-    f.differences += bvh.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c) !=
-                     none.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c);
+    f.differences += bvh.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c, shadow.startOf(i)) !=
+                     none.occluded(shadow.rays[i], 0.0, shadow.tMax[i], c, shadow.startOf(i));
   }
 }
 

@@ -32,6 +32,7 @@ RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector,
     const Ray shadow{spawnOrigin(sp, l), l};
     set.rays.push_back(shadow);
     set.tMax.push_back(glm::length(light.position - shadow.origin));
+    set.start.push_back(sp.primitive);
   }
   return set;
 }

@@ -16,6 +16,13 @@ namespace meshtrace::bench {
 struct RaySet {
   std::vector<Ray> rays;
   std::vector<double> tMax;  // kInfinity for primary rays
+  // Shadow rays: the primitive each leaves, which our queries are told (as
+  // the integrator tells them); empty for primary rays.
+  std::vector<PrimitiveRef> start;
+
+  const PrimitiveRef* startOf(std::size_t i) const {
+    return start.empty() ? nullptr : &start[i];
+  }
 };
 
 // One ray through every pixel of the scene's camera.

@@ -78,7 +78,7 @@ class Recorder {
     current().lights.push_back(lightRecord(light, l, nl));
   }
   void lightShadowed(std::size_t light, const Vec3& l, double nl, const Ray& shadow,
-                     double lightDistance) {
+                     double lightDistance, const PrimitiveRef& start) {
     LightRecord rec = lightRecord(light, l, nl);
     rec.shadowed = true;
     // The nearest blocker, found with a closest-hit query limited to the
@@ -86,7 +86,7 @@ class Recorder {
     Counters scratch;
     Hit blocker;
     blocker.t = lightDistance;
-    if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch)) {
+    if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch, &start)) {
       rec.blocker = blocker.ref;
       rec.blockerT = blocker.t;
     }

@@ -43,10 +43,10 @@ bool SceneIntersector::meshMayBeHit(std::uint32_t index, const RayInverse& inver
   return intersectSlabs(scene_.meshes[index].bounds(), inverse, tMin, tMax, tEnter, tExit);
 }
 
-bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit,
-                                  Counters& counters) const {
+bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
+                                  const PrimitiveRef* start) const {
   if (external_) return external_->closestHit(ray, tMin, hit, counters);
-  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters);
+  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters, start);
   ClosestHit closest(hit);
   if (bvh_) {
     bvh_->closestHit(query, closest, counters);
@@ -70,10 +70,10 @@ bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit,
   return closest.found();
 }
 
-bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax,
-                                Counters& counters) const {
+bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
+                                const PrimitiveRef* start) const {
   if (external_) return external_->occluded(ray, tMin, tMax, counters);
-  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters);
+  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters, start);
   if (bvh_) return bvh_->occluded(query, tMax, counters);
   const auto blocks = [&](ObjectKind kind, std::size_t n) {
     for (std::uint32_t i = 0; i < n; ++i)

@@ -51,11 +51,18 @@ class ClosestHit {
 // Per-primitive tests for one ray: `offer*` hand the primitive's own nearest
 // hit beyond tMin to a ClosestHit; `*Blocks` tell whether it has a hit at
 // tMin < t < tMax.
+// A query told the primitive its ray starts on leaves that primitive's test
+// out if it is a triangle (spawn.h says why that is exact).
 class PrimitiveQuery {
  public:
   PrimitiveQuery(const Scene& scene, const Ray& ray, TriangleKernel kernel, double tMin,
-                 Counters& counters)
-      : scene_(scene), ray_(ray), kernel_(kernel), tMin_(tMin), counters_(counters) {}
+                 Counters& counters, const PrimitiveRef* start = nullptr)
+      : scene_(scene), ray_(ray), kernel_(kernel), tMin_(tMin), counters_(counters) {
+    if (start && start->kind == ObjectKind::Mesh) {
+      startMesh_ = start->object;
+      startTriangle_ = start->triangle;
+    }
+  }
 
   const Ray& ray() const { return ray_; }
   TriangleKernel kernel() const { return kernel_; }
@@ -85,6 +92,7 @@ class PrimitiveQuery {
 
  private:
   bool triangle(std::uint32_t mesh, std::uint32_t tri, double tMax, TriangleHit& th) const {
+    if (tri == startTriangle_ && mesh == startMesh_) return false;
     const Mesh& m = scene_.meshes[mesh];
     const TriangleIndices& idx = m.triangles()[tri];
     const auto& v = m.vertices();
@@ -117,6 +125,8 @@ class PrimitiveQuery {
   mutable std::optional<TriangleRay> triangleRay_;
   double tMin_;
   Counters& counters_;
+  // The triangle the ray starts on; no mesh has this many triangles.
+  std::uint32_t startMesh_ = 0, startTriangle_ = 0xffffffffu;
 };
 
 }  // namespace meshtrace

@@ -56,9 +56,7 @@ SurfacePoint onCylinder(const Cylinder& c, const Vec3& p0, const Vec3& rayDirect
   return {p, n, &c.material, n, err};
 }
 
-}  // namespace
-
-SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, Precision precision) {
+SurfacePoint surfaceOf(const Scene& scene, const Ray& ray, const Hit& hit, Precision precision) {
   const Vec3 p0 = ray.at(hit.t);
   const PrimitiveRef& ref = hit.ref;
   switch (ref.kind) {
@@ -76,6 +74,14 @@ SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, Preci
     barycentricPoint<double>(v[tri[0]], v[tri[1]], v[tri[2]], hit.beta, hit.gamma, sp);
   else
     barycentricPoint<float>(v[tri[0]], v[tri[1]], v[tri[2]], hit.beta, hit.gamma, sp);
+  return sp;
+}
+
+}  // namespace
+
+SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, Precision precision) {
+  SurfacePoint sp = surfaceOf(scene, ray, hit, precision);
+  sp.primitive = hit.ref;
   return sp;
 }
 

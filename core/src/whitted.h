@@ -16,9 +16,10 @@ struct NoObserver {
   void surface(const Hit&, const SurfacePoint&) {}
   void ambient(const Color&) {}
   void lightBehind(std::size_t /*light*/, const Vec3& /*l*/, double /*nl*/) {}
-  // `shadow` reached something before the light at `lightDistance`.
+  // `shadow`, leaving `start`, reached something before the light at
+  // `lightDistance`.
   void lightShadowed(std::size_t, const Vec3&, double, const Ray& /*shadow*/,
-                     double /*lightDistance*/) {}
+                     double /*lightDistance*/, const PrimitiveRef& /*start*/) {}
   void lightLit(std::size_t, const Vec3&, double, const Color& /*diffuse*/,
                 const Color& /*specular*/) {}
   void local(const Color&, double /*mirror*/, bool /*reflects*/) {}
@@ -48,8 +49,8 @@ Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
     // The blocker test runs to the light's distance from the shadow ray's own
     // origin: a blocker near the light counts as much as one near the point.
     const double lightDistance = glm::length(light.position - shadow.origin);
-    if (intersector.occluded(shadow, kSpawnTMin, lightDistance, counters)) {
-      observer.lightShadowed(i, l, nl, shadow, lightDistance);
+    if (intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive)) {
+      observer.lightShadowed(i, l, nl, shadow, lightDistance, sp.primitive);
       continue;
     }
     const Color diffuse = light.color * m.diffuse * nl;
@@ -66,14 +67,15 @@ Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
   return color;
 }
 
-// Colour seen along `ray` at recursion level `level` (0 = primary).
+// Colour seen along `ray` at recursion level `level` (0 = primary); `start`
+// is the primitive a reflected ray leaves.
 template <typename Observer>
 Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
-                   Counters& counters, Observer& observer) {
+                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr) {
   const Scene& scene = intersector.scene();
   observer.beginBounce(level, ray);
   Hit hit;
-  if (!intersector.closestHit(ray, kSpawnTMin, hit, counters)) {
+  if (!intersector.closestHit(ray, kSpawnTMin, hit, counters, start)) {
     observer.endBounce(scene.background);
     return scene.background;
   }
@@ -94,7 +96,7 @@ Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int leve
   ++counters.reflectionRays;
   const Color color =
       (1.0 - mirror) * local +
-      mirror * whittedTrace(intersector, bounce, level + 1, counters, observer);
+      mirror * whittedTrace(intersector, bounce, level + 1, counters, observer, &sp.primitive);
   observer.endBounce(color);
   return color;
 }

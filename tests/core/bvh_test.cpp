@@ -2,7 +2,8 @@
 // generated meshes and object scenes (origins inside, outside and exactly on
 // the bounding box; axis-parallel directions included), the BVH must report
 // the same primitive, t and barycentrics as --accel none, and its any-hit
-// query must agree with the closest hit.
+// query must agree with the closest hit. Rays spawned off the hits, told the
+// triangle they leave, must agree too.
 #include <gtest/gtest.h>
 
 #include <tbb/blocked_range.h>
@@ -17,6 +18,7 @@
 #include "meshtrace/bvh8.h"
 #include "meshtrace/intersector.h"
 #include "meshtrace/mesh_generators.h"
+#include "meshtrace/spawn.h"
 #include "meshtrace/triangle_set.h"
 
 namespace meshtrace {
@@ -165,20 +167,27 @@ std::string describe(const Ray& ray, const Hit& h) {
 }
 
 struct Disagreements {
-  std::uint64_t rays = 0, hits = 0, closest = 0, anyHit = 0;
+  std::uint64_t rays = 0, hits = 0, closest = 0, anyHit = 0, spawned = 0;
   std::string example;
   void add(const Disagreements& o) {
     rays += o.rays;
     hits += o.hits;
     closest += o.closest;
     anyHit += o.anyHit;
+    spawned += o.spawned;
     if (example.empty()) example = o.example;
   }
 };
 
+bool sameHit(bool foundA, const Hit& a, bool foundB, const Hit& b) {
+  return foundA == foundB &&
+         (!foundA || (a.t == b.t && a.ref.kind == b.ref.kind && a.ref.object == b.ref.object &&
+                      a.ref.triangle == b.ref.triangle && a.beta == b.beta && a.gamma == b.gamma));
+}
+
 // Casts `count` random rays through the BVH and brute force and counts where
-// they disagree: in the closest hit, in any-hit against brute force, and in
-// any-hit against the closest hit.
+// they disagree: in the closest hit, in any-hit against brute force, in
+// any-hit against the closest hit, and for a ray spawned off each hit.
 Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
                       TriangleKernel kernel = {}) {
   const SceneIntersector bvh(scene, {AccelMethod::Bvh, kernel});
@@ -190,6 +199,7 @@ Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t see
       tbb::blocked_range<std::uint64_t>(0, (count + kChunk - 1) / kChunk), Disagreements(),
       [&](const tbb::blocked_range<std::uint64_t>& r, Disagreements acc) {
         Counters c;
+        std::uniform_real_distribution<double> u(0.0, 1.0);
         for (std::uint64_t chunk = r.begin(); chunk < r.end(); ++chunk) {
           std::mt19937_64 rng(seed * 1000003 + chunk);
           for (std::uint64_t i = 0; i < kChunk && chunk * kChunk + i < count; ++i) {
@@ -199,11 +209,7 @@ Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t see
             const bool fb = brute.closestHit(ray, 0.0, b, c);
             ++acc.rays;
             acc.hits += fb;
-            const bool same = fa == fb && (!fa || (a.t == b.t && a.ref.kind == b.ref.kind &&
-                                                   a.ref.object == b.ref.object &&
-                                                   a.ref.triangle == b.ref.triangle &&
-                                                   a.beta == b.beta && a.gamma == b.gamma));
-            if (!same) {
+            if (!sameHit(fa, a, fb, b)) {
               ++acc.closest;
               if (acc.example.empty())
                 acc.example = "bvh " + describe(ray, a) + " | brute force " + describe(ray, b);
@@ -225,6 +231,25 @@ Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t see
                                 ", closest " + describe(ray, b);
               }
             }
+            // A ray spawned off the hit in a random direction, told the
+            // primitive it leaves (spawn.h), as shadow and reflection rays are.
+            if (fb) {
+              const SurfacePoint sp = surfaceAt(scene, ray, b, kernel.precision);
+              const Vec3 d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+              const Ray spawned{spawnOrigin(sp, d), d};
+              Hit sa, sb;
+              const bool ga = bvh.closestHit(spawned, kSpawnTMin, sa, c, &sp.primitive);
+              const bool gb = brute.closestHit(spawned, kSpawnTMin, sb, c, &sp.primitive);
+              const double limit = (gb ? sb.t : 2.0) * scale[rng() % 3];
+              if (!sameHit(ga, sa, gb, sb) ||
+                  bvh.occluded(spawned, kSpawnTMin, limit, c, &sp.primitive) !=
+                      brute.occluded(spawned, kSpawnTMin, limit, c, &sp.primitive)) {
+                ++acc.spawned;
+                if (acc.example.empty())
+                  acc.example = "spawned: bvh " + describe(spawned, sa) + " | brute force " +
+                                describe(spawned, sb);
+              }
+            }
           }
         }
         return acc;
@@ -236,13 +261,16 @@ Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t see
 }
 
 void expectAgreement(const char* label, const Disagreements& d) {
-  std::printf("[ figures  ] %-12s %llu rays, %llu hits; closest-hit differences %llu, any-hit %llu\n",
-              label, static_cast<unsigned long long>(d.rays),
-              static_cast<unsigned long long>(d.hits), static_cast<unsigned long long>(d.closest),
-              static_cast<unsigned long long>(d.anyHit));
+  std::printf(
+      "[ figures  ] %-12s %llu rays, %llu hits; closest-hit differences %llu, any-hit %llu, "
+      "spawned %llu\n",
+      label, static_cast<unsigned long long>(d.rays), static_cast<unsigned long long>(d.hits),
+      static_cast<unsigned long long>(d.closest), static_cast<unsigned long long>(d.anyHit),
+      static_cast<unsigned long long>(d.spawned));
   EXPECT_GT(d.hits, d.rays / 5) << label << ": too few rays hit to mean much";
   EXPECT_EQ(d.closest, 0u) << label << ": " << d.example;
   EXPECT_EQ(d.anyHit, 0u) << label << ": " << d.example;
+  EXPECT_EQ(d.spawned, 0u) << label << ": " << d.example;
 }
 
 // Over a million rays in all, on meshes of a few hundred triangles (brute

@@ -51,9 +51,13 @@ class SceneIntersector {
   ~SceneIntersector();
 
   // Nearest hit with t > tMin; `hit.t` may carry an upper limit on entry.
-  bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters) const;
-  // True if anything lies at tMin < t < tMax.
-  bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters) const;
+  // `start`, for a spawned ray, is the primitive it leaves
+  // (SurfacePoint::primitive): a triangle there is not tested (spawn.h).
+  bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
+                  const PrimitiveRef* start = nullptr) const;
+  // True if anything lies at tMin < t < tMax; `start` as above.
+  bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
+                const PrimitiveRef* start = nullptr) const;
 
   const Scene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }

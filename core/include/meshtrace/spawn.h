@@ -8,6 +8,16 @@
 // leave that error box, and is then rounded one ulp further away. The true
 // surface therefore lies strictly behind the new origin at any scale, and no
 // fixed epsilon is needed.
+//
+// A flat primitive a ray leaves is then behind it altogether: the ray cannot
+// meet that plane at t > 0. So the queries, told the triangle a spawned ray
+// starts on (SurfacePoint::primitive), leave its test out; it is the one
+// triangle a shadow or reflection ray's boxes always contain and the float
+// filter can never rule out (its t is a rounding error from 0), so each
+// such ray saves an exact test. The spawned-ray stability figures
+// (stability.h) are measured without it, so they still show the offset
+// alone keeps rays off their surface. Spheres and cylinders are curved, a
+// ray may meet them again, and they are always tested.
 #include "meshtrace/math.h"
 #include "meshtrace/surface.h"
 

@@ -16,6 +16,7 @@ struct SurfacePoint {
   Vec3 geometricNormal{0.0};  // unit normal of the surface itself (zero if degenerate)
   Vec3 error{0.0};            // per-component bound on the distance of `point` from the surface
   Precision precision = Precision::Double;  // of the kernel that found the hit
+  PrimitiveRef primitive{};  // the primitive hit, which rays spawned from here start on
 };
 
 // The point is not o + t d, whose error grows with t, but is recomputed from
