@@ -18,33 +18,44 @@ int laneCount(int mask) {
   return kCount[mask & 15];
 }
 
-// Where the triangle of a block lane lives: its vertex-index row and its
-// (scene mesh, triangle) reference. With the meshes sharing one BVH, the
-// common case of a single mesh reads both straight off the lane's id; only
-// several meshes look the mesh up, chosen once per query rather than per
-// lane (the lookup on every lane cost fandisk's hitting rays 2%).
+// Where the triangles of a block live: their vertex-index rows and their
+// (scene mesh, triangle) references. A block holds triangles of one mesh
+// only (each mesh's tree is built on its own before the trees are joined,
+// bvh_build.cpp), so the mesh is found once per block: straight off the set
+// when there is one mesh, by a search of the set's meshes otherwise (that
+// search on every lane cost rings' shadow rays 160 instructions a block).
+struct BlockMesh {
+  const TriangleIndices* rows;
+  std::uint32_t sceneIndex;
+  std::uint32_t firstId;  // the set id of the mesh's triangle 0
+
+  const TriangleIndices* row(std::uint32_t id) const { return rows + (id - firstId); }
+  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, sceneIndex, id - firstId}; }
+};
+
+// The one mesh's set ids are its triangle indices.
 class SoleMesh {
  public:
   explicit SoleMesh(const TriangleSet& set) {
     const TriangleSet::Member first = set[0];
-    mesh_ = first.sceneIndex;
     rows_ = first.mesh->triangles().data();
+    sceneIndex_ = first.sceneIndex;
   }
+  const SoleMesh& of(const TriangleBlock4&) const { return *this; }
   const TriangleIndices* row(std::uint32_t id) const { return rows_ + id; }
-  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, mesh_, id}; }
+  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, sceneIndex_, id}; }
 
  private:
-  std::uint32_t mesh_;
   const TriangleIndices* rows_;
+  std::uint32_t sceneIndex_;
 };
 
 class ManyMeshes {
  public:
   explicit ManyMeshes(const TriangleSet& set) : set_(set) {}
-  const TriangleIndices* row(std::uint32_t id) const { return &set_[id].indices(); }
-  PrimitiveRef ref(std::uint32_t id) const {
-    const TriangleSet::Member t = set_[id];
-    return {ObjectKind::Mesh, t.sceneIndex, t.triangle};
+  BlockMesh of(const TriangleBlock4& block) const {
+    const TriangleSet::Member m = set_[block.id[0]];
+    return {m.mesh->triangles().data(), m.sceneIndex, block.id[0] - m.triangle};
   }
 
  private:
@@ -69,12 +80,13 @@ template <typename Locate, typename Exact>
 bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
                       const Locate& locate, double tMin, double tMax, Counters& counters,
                       Exact&& exact) {
+  const auto& mesh = locate.of(block);
   for (std::uint32_t k = 0; k < n; ++k)
-    _mm_prefetch(reinterpret_cast<const char*>(locate.row(block.id[k])), _MM_HINT_T0);
+    _mm_prefetch(reinterpret_cast<const char*>(mesh.row(block.id[k])), _MM_HINT_T0);
   int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
   counters.triangleTests += n - laneCount(mask);
   for (; mask; mask &= mask - 1)
-    if (exact(locate.ref(block.id[__builtin_ctz(static_cast<unsigned>(mask))]))) return true;
+    if (exact(mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(mask))]))) return true;
   return false;
 }
 

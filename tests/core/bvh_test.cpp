@@ -485,6 +485,29 @@ TEST(SceneBvh, LargeMeshesShareOneTriangleBvh) {
   EXPECT_EQ(bvh.stats().topLevelObjects, 2u);  // the triangle BVH and the square
 }
 
+// The queries find a block's mesh once, from its first lane: every block of
+// the shared tree must hold triangles of one mesh, however the meshes
+// interleave in space.
+TEST(SceneBvh, EachTriangleBlockHoldsOneMesh) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 3);
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", ball));
+  scene.meshes.push_back(makeMesh("twin.off", ball));
+  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(-0.9), Vec3(0.9), 5)));
+  const SceneBvh bvh(scene);
+  const MeshBvh& shared = bvh.meshBvh();
+  ASSERT_EQ(shared.triangles.meshCount(), 3u);
+  std::size_t lanes = 0, mixed = 0;
+  for (const TriangleBlock4& block : shared.blocks)
+    for (int lane = 0; lane < 4 && block.id[lane] != kNoTriangle; ++lane) {
+      ++lanes;
+      mixed += shared.triangles[block.id[lane]].sceneIndex !=
+               shared.triangles[block.id[0]].sceneIndex;
+    }
+  EXPECT_EQ(lanes, shared.triangles.size());
+  EXPECT_EQ(mixed, 0u);
+}
+
 // Nodes and triangle blocks together stay within 64 bytes per triangle on
 // large meshes: the collapse keeps small subtrees inside their parent rather
 // than giving them nodes of their own with few children.
