@@ -35,6 +35,13 @@ double secondsSince(Clock::time_point start) {
 // kSlowRenderLimit.
 constexpr double kSubsetSeconds = 0.5;
 constexpr double kSlowRenderLimit = 30.0;
+// Whole runs of each engine, alternating, for the full-run figure.
+constexpr int kFullRuns = 5;
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
 
 struct Throughput {
   double primary[2] = {0, 0};  // Mrays/s on 1 thread, on all
@@ -243,12 +250,19 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
   measureSideBySide(ours, embree, embreeHq, primary, shadow, threads, f);
   f.ours.measured = f.embree.measured = f.embreeHq.measured = true;
 
-  const auto out = outDir / (f.name + ".png");
-  f.ours.renderMs = fullRunMs(file, out, threads, [](const Scene& s) {
-    return std::make_unique<Ours>(s, AccelMethod::Bvh);
-  });
-  f.embree.renderMs = fullRunMs(file, outDir / (f.name + "-embree.png"), threads,
-                                [](const Scene& s) { return std::make_unique<WithEmbree>(s); });
+  // Whole runs alternate between the engines and each takes its median:
+  // a single run each moved the ratio by up to a tenth between benches.
+  std::vector<double> oursRuns, embreeRuns;
+  for (int k = 0; k < kFullRuns; ++k) {
+    oursRuns.push_back(fullRunMs(file, outDir / (f.name + ".png"), threads, [](const Scene& s) {
+      return std::make_unique<Ours>(s, AccelMethod::Bvh);
+    }));
+    embreeRuns.push_back(
+        fullRunMs(file, outDir / (f.name + "-embree.png"), threads,
+                  [](const Scene& s) { return std::make_unique<WithEmbree>(s); }));
+  }
+  f.ours.renderMs = median(oursRuns);
+  f.embree.renderMs = median(embreeRuns);
 
   if (slow) {
     for (AccelMethod m : {AccelMethod::BoundingBox, AccelMethod::None}) {
