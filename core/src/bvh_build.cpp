@@ -56,6 +56,16 @@ float roundUp(double x) {
 // would otherwise run into the (very slow) denormal assists.
 inline __m128 xyz(__m128 v) { return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0))); }
 
+// A box rounded outward to float, in SSE lanes x, y, z.
+struct FloatBox {
+  __m128 lo, hi;
+};
+
+FloatBox roundedOutward(const Aabb& b) {
+  return {_mm_setr_ps(roundDown(b.min.x), roundDown(b.min.y), roundDown(b.min.z), 0.0f),
+          _mm_setr_ps(roundUp(b.max.x), roundUp(b.max.y), roundUp(b.max.z), 0.0f)};
+}
+
 // A float box in SSE lanes x, y, z (w: see xyz).
 struct Box4 {
   __m128 lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
@@ -185,22 +195,20 @@ struct Split {
 
 class Builder {
  public:
-  // boxOf(i) is primitive i's box in double.
-  template <typename BoxOf>
-  Builder(std::size_t n, const BoxOf& boxOf, const BvhBuildOptions& options, Bvh& out)
+  // floatBoxOf(i) is primitive i's box as a FloatBox.
+  template <typename FloatBoxOf>
+  Builder(std::size_t n, const FloatBoxOf& floatBoxOf, const BvhBuildOptions& options, Bvh& out)
       : options_(options), out_(out), bins_(std::clamp(options.bins, 2, kMaxBins)),
         refs_(new PrimRef[n]), nodes_(new BvhNode[2 * n]) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          const Aabb b = boxOf(i);
-                          float index;
-                          const auto id = static_cast<std::uint32_t>(i);
-                          std::memcpy(&index, &id, sizeof index);
-                          refs_[i].lo = _mm_setr_ps(roundDown(b.min.x), roundDown(b.min.y),
-                                                    roundDown(b.min.z), index);
-                          refs_[i].hi = _mm_setr_ps(roundUp(b.max.x), roundUp(b.max.y),
-                                                    roundUp(b.max.z), 0.0f);
+                          const FloatBox b = floatBoxOf(i);
+                          const auto id = static_cast<std::int32_t>(i);
+                          refs_[i].lo = _mm_castsi128_ps(_mm_insert_epi16(
+                              _mm_insert_epi16(_mm_castps_si128(xyz(b.lo)), id & 0xffff, 6),
+                              (id >> 16) & 0xffff, 7));
+                          refs_[i].hi = xyz(b.hi);
                         }
                       });
   }
@@ -378,7 +386,7 @@ class Builder {
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options) {
   Bvh bvh;
   if (boxes.empty()) return bvh;
-  const auto boxOf = [&](std::size_t i) { return boxes[i]; };
+  const auto boxOf = [&](std::size_t i) { return roundedOutward(boxes[i]); };
   Builder(boxes.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(boxes.size()));
   return bvh;
 }
@@ -389,10 +397,21 @@ Bvh buildOneMesh(const Mesh& mesh, const BvhBuildOptions& options) {
   Bvh bvh;
   const auto& triangles = mesh.triangles();
   if (triangles.empty()) return bvh;
+  // Each vertex is rounded outward once, not once per triangle using it:
+  // rounding is monotone, so the triangle's float box, the lows' minimum
+  // and the highs' maximum, is the same as its double box rounded outward.
+  const auto& vertices = mesh.vertices();
+  std::vector<FloatBox> vertexBoxes(vertices.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), 16384),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t v = r.begin(); v < r.end(); ++v)
+                        vertexBoxes[v] = roundedOutward(Aabb{vertices[v], vertices[v]});
+                    });
   const auto boxOf = [&](std::size_t i) {
-    Aabb b;
-    for (std::uint32_t k : triangles[i]) b.extend(mesh.vertices()[k]);
-    return b;
+    const TriangleIndices& t = triangles[i];
+    const FloatBox &a = vertexBoxes[t[0]], &b = vertexBoxes[t[1]], &c = vertexBoxes[t[2]];
+    return FloatBox{_mm_min_ps(_mm_min_ps(a.lo, b.lo), c.lo),
+                    _mm_max_ps(_mm_max_ps(a.hi, b.hi), c.hi)};
   };
   Builder(triangles.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(triangles.size()));
   return bvh;
