@@ -23,7 +23,10 @@ double halfArea(const BvhNode& n) {
 // Orders the used children of each octant by their box centres projected
 // on the octant's diagonal: a direction-only estimate of which box a ray
 // enters first, free of per-ray work. Used slots come first; an unused one
-// has an empty box (lo > hi).
+// has an empty box (lo > hi). Opposite octants (o and o ^ 7) have opposite
+// diagonals, so one sort serves both: the other takes the used slots in
+// reverse (children at equal distance then come in the other order, which
+// no ray can tell apart).
 void setChildOrders(Bvh8Node& node) {
   int n = 0;
   while (n < kBvhWidth && node.lo[0][n] <= node.hi[0][n]) ++n;
@@ -31,28 +34,33 @@ void setChildOrders(Bvh8Node& node) {
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a)
       centre2[i][a] = static_cast<double>(node.lo[a][i]) + node.hi[a][i];
-  for (int octant = 0; octant < 8; ++octant) {
+  const auto store = [&node](int octant, const int* slots) {
+    std::uint32_t packed = 0;
+    for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
+    for (int byte = 0; byte < 3; ++byte)
+      node.order[octant][byte] = static_cast<std::uint8_t>(packed >> (8 * byte));
+  };
+  for (int octant = 0; octant < 4; ++octant) {
     double key[kBvhWidth];
     int slots[kBvhWidth];
     for (int i = 0; i < kBvhWidth; ++i) {
       slots[i] = i;
-      key[i] = std::numeric_limits<double>::infinity();  // unused slots go last
       if (i >= n) continue;
       key[i] = 0.0;
       for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
     }
-    // A stable insertion sort: std::stable_sort takes a heap buffer, and
-    // with its allocations it was half of the collapse's instructions.
-    for (int k = 1; k < kBvhWidth; ++k) {
+    // A stable insertion sort of the used slots: std::stable_sort takes a
+    // heap buffer, and with its allocations it was half of the collapse's
+    // instructions.
+    for (int k = 1; k < n; ++k) {
       const int slot = slots[k];
       int j = k;
       for (; j > 0 && key[slot] < key[slots[j - 1]]; --j) slots[j] = slots[j - 1];
       slots[j] = slot;
     }
-    std::uint32_t packed = 0;
-    for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);
-    for (int byte = 0; byte < 3; ++byte)
-      node.order[octant][byte] = static_cast<std::uint8_t>(packed >> (8 * byte));
+    store(octant, slots);
+    std::reverse(slots, slots + n);
+    store(octant ^ 7, slots);
   }
 }
 
