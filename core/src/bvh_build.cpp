@@ -14,7 +14,6 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <memory>
 
 #include "meshtrace/bvh.h"
@@ -204,10 +203,8 @@ class Builder {
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
                           const FloatBox b = floatBoxOf(i);
-                          const auto id = static_cast<std::int32_t>(i);
-                          refs_[i].lo = _mm_castsi128_ps(_mm_insert_epi16(
-                              _mm_insert_epi16(_mm_castps_si128(xyz(b.lo)), id & 0xffff, 6),
-                              (id >> 16) & 0xffff, 7));
+                          const __m128i id = _mm_setr_epi32(0, 0, 0, static_cast<int>(i));
+                          refs_[i].lo = _mm_or_ps(xyz(b.lo), _mm_castsi128_ps(id));
                           refs_[i].hi = xyz(b.hi);
                         }
                       });
