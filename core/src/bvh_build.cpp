@@ -114,8 +114,9 @@ struct RangeBounds {
 struct Binner {
   __m128 origin, scale, last;
   bool usable[3];
+  int count;  // bins per axis
 
-  Binner(const Box4& centroids, int bins) {
+  Binner(const Box4& centroids, int bins) : count(bins) {
     alignas(16) float lo[4], hi[4], s[4] = {0, 0, 0, 0};
     _mm_store_ps(lo, centroids.lo);
     _mm_store_ps(hi, centroids.hi);
@@ -235,9 +236,18 @@ class Builder {
     return static_cast<float>((n + block - 1) / block);
   }
 
+  // Bins for a node of n primitives: about one per two primitives, at least
+  // four. A node of a few primitives gains nothing from more boundaries
+  // than it has gaps between primitives, yet paid a sweep over all of them:
+  // the full count for every node took 12-14% longer to build
+  // refined_elephant (1 and 2 threads) for the same primary ray speed.
+  int binsFor(std::uint32_t n) const {
+    return std::min(bins_, static_cast<int>(std::max<std::uint32_t>(n / 2, 4)));
+  }
+
   // The cheapest bin boundary over the three axes, or axis -1 if none.
   Split findSplit(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
-    Bins bins(bins_);
+    Bins bins(binner.count);
     reduceRange(
         begin, end,
         [&](std::uint32_t b, std::uint32_t e, Bins& acc) {
@@ -261,14 +271,14 @@ class Builder {
       float rightCost[kMaxBins];
       Box4 right;
       std::uint32_t rightCount = 0;
-      for (int i = bins_ - 1; i > 0; --i) {
+      for (int i = binner.count - 1; i > 0; --i) {
         right.extend(bins.bin[a][i].lo, bins.bin[a][i].hi);
         rightCount += bins.bin[a][i].count;
         rightCost[i - 1] = right.halfArea() * tests(rightCount);
       }
       Box4 left;
       std::uint32_t leftCount = 0;
-      for (int i = 0; i < bins_ - 1; ++i) {
+      for (int i = 0; i < binner.count - 1; ++i) {
         left.extend(bins.bin[a][i].lo, bins.bin[a][i].hi);
         leftCount += bins.bin[a][i].count;
         if (leftCount == 0 || leftCount == end - begin) continue;
@@ -341,7 +351,7 @@ class Builder {
 
     RangeBounds left, right;
     std::uint32_t mid;
-    const Binner binner(bounds.centroids, bins_);
+    const Binner binner(bounds.centroids, binsFor(n));
     const Split split = depth < kMedianDepth ? findSplit(begin, end, binner) : Split{};
     if (split.axis >= 0) {
       const double area = bounds.box.halfArea();

@@ -39,7 +39,7 @@ struct Bvh {
 };
 
 struct BvhBuildOptions {
-  int bins = 16;             // candidate split planes per axis
+  int bins = 16;             // candidate split planes per axis (fewer for small nodes)
   int maxLeafSize = 4;       // larger sets are always split
   double nodeCost = 1.0;     // SAH: cost of one node visit (two box tests) ...
   double primitiveCost = 1.0;  // ... relative to one primitive test
