@@ -123,6 +123,50 @@ TEST(VertexNormals, DegenerateTrianglesContributeNothingAndGiveNoNan) {
   for (const Vec3& n : normals) EXPECT_TRUE(isFinite(n));
 }
 
+// A triangle listed again, in any vertex order or winding, adds nothing:
+// the normals are those of the mesh without the repeats.
+TEST(VertexNormals, ATriangleListedTwiceCountsOnce) {
+  MeshData once;
+  once.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1), Vec3(1, 1, 0)};
+  once.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}};
+  MeshData repeated = once;
+  repeated.triangles.insert(repeated.triangles.begin() + 1, {2, 0, 1});  // rotated
+  repeated.triangles.push_back({3, 2, 0});                               // reversed
+  repeated.triangles.push_back({0, 1, 2});                               // a third copy
+  repeated.triangles.push_back({0, 1, 4});  // shares a corner set with no other
+  once.triangles.push_back({0, 1, 4});
+  const std::vector<Vec3> expected = vertexNormalsOf(once);
+  const std::vector<Vec3> normals = vertexNormalsOf(repeated);
+  ASSERT_EQ(normals.size(), expected.size());
+  for (std::size_t v = 0; v < normals.size(); ++v) EXPECT_EQ(normals[v], expected[v]) << v;
+}
+
+// The corner angles are taken in parallel, in chunks: a mesh larger than a
+// chunk must get the normals of the one-triangle-at-a-time sum, bit for bit.
+TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
+  MeshData grid;
+  constexpr std::uint32_t kSide = 200;  // 79,202 triangles
+  for (std::uint32_t y = 0; y < kSide; ++y)
+    for (std::uint32_t x = 0; x < kSide; ++x)
+      grid.vertices.push_back(Vec3(x, y, std::sin(0.3 * x) * std::cos(0.2 * y)));
+  for (std::uint32_t y = 0; y + 1 < kSide; ++y)
+    for (std::uint32_t x = 0; x + 1 < kSide; ++x) {
+      const std::uint32_t v = y * kSide + x;
+      grid.triangles.push_back({v, v + 1, v + kSide + 1});
+      grid.triangles.push_back({v, v + kSide + 1, v + kSide});
+    }
+  const std::vector<Vec3> triangleNormals = triangleNormalsOf(grid);
+  std::vector<Vec3> serial(grid.vertices.size(), Vec3(0.0));
+  for (std::size_t i = 0; i < grid.triangles.size(); ++i) {
+    const auto& t = grid.triangles[i];
+    const Vec3 w = cornerAngles(grid.vertices[t[0]], grid.vertices[t[1]], grid.vertices[t[2]]);
+    for (int k = 0; k < 3; ++k) serial[t[k]] += w[k] * triangleNormals[i];
+  }
+  const std::vector<Vec3> normals = angleWeightedVertexNormals(grid, triangleNormals);
+  for (std::size_t v = 0; v < normals.size(); ++v)
+    ASSERT_EQ(normals[v], serial[v] / glm::length(serial[v])) << v;
+}
+
 TEST(VertexNormals, WeighEachTriangleByItsAngleAtTheVertex) {
   // Two triangles meet at vertex 0: one in the z = 0 plane with a 90° corner
   // there, one in the x = 0 plane with a 45° corner.

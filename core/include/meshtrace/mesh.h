@@ -51,8 +51,9 @@ class Mesh {
   std::vector<Vec3> vertexNormals_;
 };
 
-// Angle-weighted vertex normals, in one pass over the triangles. A vertex with
-// no non-degenerate incident triangle gets the zero vector.
+// Angle-weighted vertex normals, summed in triangle order (the same bits on
+// any number of threads). A triangle listed more than once counts once; a
+// vertex with no non-degenerate incident triangle gets the zero vector.
 std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
                                              const std::vector<Vec3>& triangleNormals);
 
