@@ -9,7 +9,7 @@ packages=(
   # toolchain
   cmake g++ ninja-build pkg-config
   # core
-  libglm-dev libtbb-dev libstb-dev libjpeg-dev libcli11-dev
+  libglm-dev libtbb-dev libstb-dev libjpeg-dev libpng-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libbenchmark-dev
   # the viewer: window, UI, offscreen GL, the OpenMesh cross-check, and its

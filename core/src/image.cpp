@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "jpeg.h"
+#include "png_encoder.h"
 
 namespace meshtrace {
 
@@ -35,7 +36,7 @@ std::string lowerExtension(const std::filesystem::path& path) {
   return ext;
 }
 
-// stb's encoders append to the vector through this callback.
+// stb's BMP encoder appends to the vector through this callback.
 void appendBytes(void* context, void* data, int size) {
   auto* out = static_cast<std::vector<std::uint8_t>*>(context);
   const auto* bytes = static_cast<const std::uint8_t*>(data);
@@ -67,8 +68,11 @@ std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
   std::vector<std::uint8_t> bytes;
   bool ok = true;
   if (ext == ".png") {
-    ok = stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3,
-                                image.rgb.data(), image.width * 3);
+    try {
+      bytes = png::encode(image);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(path.string() + ": " + e.what());
+    }
   } else if (ext == ".bmp") {
     ok = stbi_write_bmp_to_func(appendBytes, &bytes, image.width, image.height, 3,
                                 image.rgb.data());

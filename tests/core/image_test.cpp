@@ -97,6 +97,21 @@ INSTANTIATE_TEST_SUITE_P(Extensions, LosslessFormat, ::testing::Values(".png", "
                            return s;
                          });
 
+// A render-sized image of noise and flat runs: zlib's output then spans
+// many buffers of the encoder's write callback.
+TEST(WriteImage, PngOfARenderSizedImageReadsBackExactly) {
+  Image8 image{800, 600, {}};
+  image.rgb.resize(800 * 600 * 3);
+  std::uint32_t state = 12345;
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    state = state * 1664525u + 1013904223u;
+    image.rgb[i] = (i / 3) % 800 < 400 ? static_cast<std::uint8_t>(state >> 24) : 40;
+  }
+  const auto path = test::scratchDir() / "render.png";
+  writeImage(image, path);
+  expectSameImage(readImage(path), image);
+}
+
 TEST(WriteImage, PpmIsBinaryP6TopRowFirst) {
   const auto path = test::scratchDir() / "img.ppm";
   writeImage(testPattern(2, 3), path);
