@@ -199,7 +199,10 @@ class Builder {
   template <typename FloatBoxOf>
   Builder(std::size_t n, const FloatBoxOf& floatBoxOf, const BvhBuildOptions& options, Bvh& out)
       : options_(options), out_(out), bins_(std::clamp(options.bins, 2, kMaxBins)),
-        refs_(new PrimRef[n]), nodes_(new BvhNode[2 * n]) {
+        refs_(new PrimRef[n]) {
+    // Room for the most nodes a tree can have; the pages of those never
+    // used are never touched.
+    out_.nodes.resize(2 * n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -221,7 +224,7 @@ class Builder {
         root);
     build(0, 0, n, root, 1);
     const std::uint32_t count = nodeCount_.load();
-    out_.nodes.assign(nodes_.get(), nodes_.get() + count);
+    out_.nodes.resize(count);
     out_.order.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) out_.order[i] = refs_[i].index();
     out_.depth = depth_.load();
@@ -333,7 +336,7 @@ class Builder {
 
   void build(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
              const RangeBounds& bounds, int depth) {
-    BvhNode& node = nodes_[index];
+    BvhNode& node = out_.nodes[index];
     alignas(16) float lo[4], hi[4];
     _mm_store_ps(lo, bounds.box.lo);
     _mm_store_ps(hi, bounds.box.hi);
@@ -383,7 +386,6 @@ class Builder {
                         ? std::countr_zero(static_cast<unsigned>(std::max(options_.leafBlock, 1)))
                         : -1;
   std::unique_ptr<PrimRef[]> refs_;
-  std::unique_ptr<BvhNode[]> nodes_;  // room for the most nodes a tree can have
   std::atomic<std::uint32_t> nodeCount_{1};
   std::atomic<int> depth_{0};
 };
@@ -408,7 +410,7 @@ Bvh buildOneMesh(const Mesh& mesh, const BvhBuildOptions& options) {
   // rounding is monotone, so the triangle's float box, the lows' minimum
   // and the highs' maximum, is the same as its double box rounded outward.
   const auto& vertices = mesh.vertices();
-  std::vector<FloatBox> vertexBoxes(vertices.size());
+  BuildVector<FloatBox> vertexBoxes(vertices.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), 16384),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t v = r.begin(); v < r.end(); ++v)

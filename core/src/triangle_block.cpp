@@ -23,7 +23,7 @@ BlockFrame blockFrame(const Aabb& box) {
   return frame;
 }
 
-std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
                                                const BlockFrame& frame, Bvh8& tree) {
   struct Leaf {
     std::uint32_t first, count;
@@ -39,7 +39,7 @@ std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
         node.first[i] = static_cast<std::uint32_t>(leaves.size() - 1);
       }
   }
-  std::vector<TriangleBlock4> blocks(leaves.size());
+  BuildVector<TriangleBlock4> blocks(leaves.size());  // each written once, below
   const auto local = [&](const Vec3& p) { return (p - frame.center) * frame.scale; };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 4096),
                     [&](const tbb::blocked_range<std::size_t>& r) {

@@ -20,7 +20,7 @@ struct Blocks {
   Mesh mesh;
   BlockFrame frame;
   Bvh8 tree;
-  std::vector<TriangleBlock4> blocks;
+  BuildVector<TriangleBlock4> blocks;
   std::vector<int> counts;  // valid lanes per block
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "meshtrace/aabb.h"
+#include "meshtrace/build_vector.h"
 
 namespace meshtrace {
 
@@ -28,7 +29,7 @@ struct BvhNode {
 static_assert(sizeof(BvhNode) == 32);
 
 struct Bvh {
-  std::vector<BvhNode> nodes;        // nodes[0] is the root; empty for no primitives
+  BuildVector<BvhNode> nodes;        // nodes[0] is the root; empty for no primitives
   std::vector<std::uint32_t> order;  // primitive indices, grouped by leaf
   int depth = 0;                     // longest root-to-leaf path (root = 1)
 

@@ -40,7 +40,7 @@ inline constexpr std::size_t kMinBvhTriangles = 8;
 struct MeshBvh {
   TriangleSet triangles;  // what a block lane's id refers to
   Bvh8 tree;              // a leaf's `first` is its block index
-  std::vector<TriangleBlock4> blocks;
+  BuildVector<TriangleBlock4> blocks;
   BlockFrame frame;
 
   bool empty() const { return blocks.empty(); }

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshtrace/build_vector.h"
 #include "meshtrace/bvh8.h"
 #include "meshtrace/math.h"
 #include "meshtrace/triangle.h"
@@ -46,7 +47,7 @@ inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 // Replaces each leaf of `tree` (at most four triangles of `triangles`, from
 // tree.order) by one block: afterwards a leaf's `first` is its block index,
 // and tree.order is released. A lane's id is its triangle's id in the set.
-std::vector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
                                                const BlockFrame& frame, Bvh8& tree);
 // The frame that fits `box` (the set's bounds) in [-1, 1]^3.
 BlockFrame blockFrame(const Aabb& box);
