@@ -1,6 +1,7 @@
 #pragma once
 // Tokenising and number parsing shared by the scene and OFF readers. Numbers
 // are parsed with std::from_chars: no locale, no iostream on the hot path.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -27,6 +28,8 @@ class LineReader {
   // The next line that has any token; false at the end of the text.
   bool nextNonEmpty(std::string_view& line);
   std::size_t lineNumber() const { return line_; }
+  // Where the next line starts in the text.
+  std::size_t offset() const { return std::min(pos_, text_.size()); }
 
  private:
   std::string_view text_;

@@ -7,6 +7,9 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
 
 #include "../support/files.h"
 #include "../support/input_errors.h"
@@ -78,6 +81,77 @@ TEST(OffReader, IgnoresPerFaceColourValuesAfterTheIndices) {
       "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1.0\n");
   ASSERT_EQ(mesh.triangles.size(), 2u);
   EXPECT_EQ(mesh.triangles[1], (TriangleIndices{0, 2, 3}));
+}
+
+// A file of several megabytes is read in chunks of lines, in parallel.
+// This one mixes the cases a chunk boundary can fall between: comments,
+// blank lines, CRLF, quads, and it is built so that line L holds element
+// L - 3 (vertex or face) wherever no blank line or comment was put in.
+struct LargeOff {
+  std::string text;
+  MeshData expected;
+  std::vector<std::size_t> faceLine;  // the line each face is on
+};
+
+LargeOff largeOff(std::uint32_t vertices, std::uint32_t faces) {
+  LargeOff off;
+  off.text = "OFF\n" + std::to_string(vertices) + " " + std::to_string(faces) + " 0\n";
+  std::size_t line = 2;
+  for (std::uint32_t v = 0; v < vertices; ++v) {
+    if (v % 997 == 0) off.text += "# a comment line\n", ++line;
+    if (v % 1499 == 0) off.text += "\r\n", ++line;
+    const Vec3 p(v * 0.5, -1.0 * (v % 101), v / 7.0);
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g%s\n", p.x, p.y, p.z,
+                  v % 3 == 0 ? "\r" : "");
+    off.text += buffer, ++line;
+    off.expected.vertices.push_back(p);
+  }
+  for (std::uint32_t f = 0; f < faces; ++f) {
+    const std::uint32_t a = f % vertices, b = (f * 7 + 1) % vertices, c = (f * 13 + 2) % vertices;
+    if (f % 5 == 0) {
+      const std::uint32_t d = (f * 17 + 3) % vertices;
+      off.text += "4 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
+                  " " + std::to_string(d) + " # a quad\n";
+      off.expected.triangles.push_back({a, b, c});
+      off.expected.triangles.push_back({a, c, d});
+    } else {
+      off.text += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
+                  " 255 0 0\n";
+      off.expected.triangles.push_back({a, b, c});
+    }
+    off.faceLine.push_back(++line);
+  }
+  return off;
+}
+
+TEST(OffReader, ReadsAFileOfManyChunksAsWritten) {
+  const LargeOff off = largeOff(60000, 120000);
+  ASSERT_GT(off.text.size(), std::size_t{4} << 20) << "several chunks";
+  const MeshData mesh = readOffText(off.text);
+  EXPECT_EQ(mesh.vertices, off.expected.vertices);
+  EXPECT_EQ(mesh.triangles, off.expected.triangles);
+}
+
+// Of two bad lines in different chunks, the first in the file is reported,
+// with its own line number, as a reader going line by line would.
+TEST(OffReader, NamesTheFirstBadLineOfALargeFile) {
+  LargeOff off = largeOff(60000, 120000);
+  const auto breakFace = [&](std::uint32_t face, std::string_view with) {
+    std::size_t at = 0;
+    for (std::size_t l = 1; l < off.faceLine[face]; ++l) at = off.text.find('\n', at) + 1;
+    off.text.insert(at, with);
+  };
+  breakFace(110000, "x");  // "x3 ...": not a corner count
+  breakFace(70000, "-");   // "-3 ...": fewer than three corners
+  expectMentions(offErrorOf(off.text),
+                 {"mesh.off:" + std::to_string(off.faceLine[70000]), "face 70000", "corners"});
+}
+
+TEST(OffReader, NamesTheMissingFaceOfALargeFile) {
+  LargeOff off = largeOff(60000, 120000);
+  off.text.replace(off.text.find(" 120000 0"), 9, " 120001 0");
+  expectMentions(offErrorOf(off.text), {"mesh.off", "face 120000 of 120001"});
 }
 
 TEST(OffReader, RejectsAMissingFileNamingIt) {
