@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <csetjmp>
+#include <cstdio>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -14,24 +15,29 @@ namespace {
 
 struct Output {
   std::vector<std::uint8_t> bytes;
-  std::string error;
+  char error[256] = "cannot set up libpng";  // kept where nothing can throw
 };
 
 // libpng reports fatal errors through a callback that must not return; it
 // keeps the message and jumps back to encode(), which throws it.
 void onError(png_structp png, png_const_charp message) {
-  static_cast<Output*>(png_get_error_ptr(png))->error = message;
+  auto* out = static_cast<Output*>(png_get_error_ptr(png));
+  std::snprintf(out->error, sizeof out->error, "%s", message);
   png_longjmp(png, 1);
 }
 void onWarning(png_structp, png_const_charp) {}
 
 void append(png_structp png, png_bytep data, png_size_t size) {
   auto* out = static_cast<Output*>(png_get_io_ptr(png));
+  bool stored = true;
   try {
     out->bytes.insert(out->bytes.end(), data, data + size);
   } catch (const std::bad_alloc&) {
-    png_error(png, "out of memory");
+    stored = false;
   }
+  // Outside the handler: png_error jumps, and jumping out of a handler
+  // would skip the exception's own clean-up.
+  if (!stored) png_error(png, "out of memory");
 }
 
 }  // namespace
@@ -43,8 +49,7 @@ std::vector<std::uint8_t> encode(const Image8& image) {
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("PNG encoding failed: " +
-                             (out.error.empty() ? std::string("cannot set up libpng") : out.error));
+    throw std::runtime_error(std::string("PNG encoding failed: ") + out.error);
   }
   png_set_write_fn(png, &out, append, nullptr);
   // Sub predicts each byte from the pixel to its left, which suits smooth

@@ -112,6 +112,20 @@ TEST(WriteImage, PngOfARenderSizedImageReadsBackExactly) {
   expectSameImage(readImage(path), image);
 }
 
+// libpng refuses a zero-sized image; its reason reaches the caller and no
+// file is left behind.
+TEST(WriteImage, AnEmptyPngIsRefusedWithTheEncodersReason) {
+  const auto path = test::scratchDir() / "empty.png";
+  try {
+    writeImage(Image8{0, 0, {}}, path);
+    FAIL() << "an empty image was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("IHDR"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
 TEST(WriteImage, PpmIsBinaryP6TopRowFirst) {
   const auto path = test::scratchDir() / "img.ppm";
   writeImage(testPattern(2, 3), path);
