@@ -60,35 +60,29 @@ bool knownType(const std::string& ext) {
                            "' (use .png, .bmp, .ppm or .jpg)");
 }
 
+// The bytes of `image` in the known type `ext` names. A codec's error
+// comes without the file's name; encode() adds it, once for every codec.
+std::vector<std::uint8_t> encodeAs(const Image8& image, const std::string& ext) {
+  if (ext == ".png") return png::encode(image);
+  if (ext == ".jpg" || ext == ".jpeg") return jpeg::encode(image, 95);
+  if (ext == ".ppm") return encodePpm(image);
+  std::vector<std::uint8_t> bytes;  // .bmp
+  if (!stbi_write_bmp_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data()))
+    throw std::runtime_error("cannot encode the image");
+  return bytes;
+}
+
 // The file's bytes for the type named by `ext`. Encoding in memory and
 // writing separately lets every write error be seen: stb's file writers
 // ignore failed writes and report success for a truncated file.
 std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
                                  const std::filesystem::path& path) {
-  std::vector<std::uint8_t> bytes;
-  bool ok = true;
-  if (ext == ".png") {
-    try {
-      bytes = png::encode(image);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(path.string() + ": " + e.what());
-    }
-  } else if (ext == ".bmp") {
-    ok = stbi_write_bmp_to_func(appendBytes, &bytes, image.width, image.height, 3,
-                                image.rgb.data());
-  } else if (ext == ".ppm") {
-    bytes = encodePpm(image);
-  } else if (ext == ".jpg" || ext == ".jpeg") {
-    try {
-      bytes = jpeg::encode(image, 95);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(path.string() + ": " + e.what());
-    }
-  } else {
-    throwUnknownType(path, ext);
+  if (!knownType(ext)) throwUnknownType(path, ext);
+  try {
+    return encodeAs(image, ext);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
   }
-  if (!ok) throw std::runtime_error(path.string() + ": cannot encode the image");
-  return bytes;
 }
 
 // True only if every byte reached the file and it closed cleanly.

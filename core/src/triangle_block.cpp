@@ -39,7 +39,7 @@ BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
         node.first[i] = static_cast<std::uint32_t>(leaves.size() - 1);
       }
   }
-  BuildVector<TriangleBlock4> blocks(leaves.size());  // each written once, below
+  BuildVector<TriangleBlock4> blocks(leaves.size());  // every block is assigned below
   const auto local = [&](const Vec3& p) { return (p - frame.center) * frame.scale; };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 4096),
                     [&](const tbb::blocked_range<std::size_t>& r) {
