@@ -1,8 +1,10 @@
 #include "crossover.h"
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 
 #include "meshtrace/mesh_generators.h"
 #include "rays.h"
@@ -12,7 +14,8 @@ namespace meshtrace::bench {
 namespace {
 
 // 10 x 10 small meshes on the xz plane, seen from above: flat squares of
-// 2 n^2 triangles (n x n grids) or tori of 2 * ring * tube triangles.
+// 2 n^2 triangles (n x n grids), flat fans (below) or tori of
+// 2 * ring * tube triangles.
 Scene gridOfMeshes(const std::function<MeshData(const Vec3&)>& make) {
   Scene scene;
   CameraSpec cam;
@@ -27,6 +30,21 @@ Scene gridOfMeshes(const std::function<MeshData(const Vec3&)>& make) {
       scene.meshes.emplace_back("small", make(Vec3(3.0 * i, 0.0, 3.0 * j)), Shading::Flat,
                                 Material{});
   return scene;
+}
+
+// A flat regular polygon of k triangles around its centre, facing +y, with
+// the 2 x 2 squares' circumradius: the sizes between the squares' 2 and 8.
+MeshData makeFan(const Vec3& center, int k) {
+  MeshData m;
+  m.vertices.push_back(center);
+  for (int i = 0; i < k; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / k;
+    m.vertices.push_back(center + std::sqrt(2.0) * Vec3(std::cos(a), 0.0, -std::sin(a)));
+  }
+  for (int i = 0; i < k; ++i)
+    m.triangles.push_back(
+        {0, static_cast<std::uint32_t>(1 + i), static_cast<std::uint32_t>(1 + (i + 1) % k)});
+  return m;
 }
 
 double primaryMrays(const Scene& scene, std::size_t minTriangles, const RaySet& rays) {
@@ -54,8 +72,10 @@ void printCrossover() {
                 scene.meshes[0].triangles().size(), with, without, with / without);
     std::fflush(stdout);
   };
-  for (int n : {1, 2})
-    row("square", gridOfMeshes([n](const Vec3& c) { return makeGrid(c, 2.0, n); }));
+  row("square", gridOfMeshes([](const Vec3& c) { return makeGrid(c, 2.0, 1); }));
+  for (int k = 3; k < 8; ++k)
+    row("fan", gridOfMeshes([k](const Vec3& c) { return makeFan(c, k); }));
+  row("square", gridOfMeshes([](const Vec3& c) { return makeGrid(c, 2.0, 2); }));
   const int sizes[][2] = {{3, 2}, {4, 2}, {4, 3}, {4, 4}, {6, 4}, {8, 4}, {8, 8}};
   for (const auto& [ring, tube] : sizes)
     row("torus", gridOfMeshes([ring, tube](const Vec3& c) {

@@ -31,9 +31,10 @@ class PrimitiveQuery;
 // Meshes with fewer triangles stay out of the triangle BVH: testing their few
 // triangles after their top-level box is faster. Measured by
 // `bench --crossover` (see BENCHMARKS.md) on 100 meshes of n triangles: with
-// all of them in the shared BVH, 2-triangle squares lose (0.86-0.94x) and
-// 8-triangle ones gain (1.05-1.06x).
-inline constexpr std::size_t kMinBvhTriangles = 8;
+// all of them in the shared BVH, 2-triangle squares lose in every run
+// (0.91-0.99x) and 3-triangle fans gain in every run (1.01-1.08x); medians
+// over eleven runs 0.96x at 2 triangles, 1.02-1.15x from 3 to 7.
+inline constexpr std::size_t kMinBvhTriangles = 3;
 
 // The BVH over the triangles of a set of meshes: 8-wide nodes whose leaves
 // are triangle blocks.
