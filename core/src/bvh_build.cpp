@@ -31,23 +31,13 @@ constexpr std::uint32_t kParallelSubtrees = 4096;
 // depth by this plus log2(n) <= kMaxBvhDepth.
 constexpr int kMedianDepth = 64;
 
-// The next float above (below) a float that is not NaN or +inf (-inf),
-// by stepping its bits: std::nextafter is a library call, made here for
-// half of the six box coordinates of every primitive.
-float floatAbove(float f) {
-  if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
-}
-float floatBelow(float f) { return -floatAbove(-f); }
-
 float roundDown(double x) {
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? floatBelow(f) : f;
+  return static_cast<double>(f) > x ? nextDown(f) : f;
 }
 float roundUp(double x) {
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? floatAbove(f) : f;
+  return static_cast<double>(f) < x ? nextUp(f) : f;
 }
 
 // Lanes x, y, z. The w lane of a primitive's box holds its index, whose bit

@@ -1,7 +1,5 @@
 #include "meshtrace/spawn.h"
 
-#include <cmath>
-
 namespace meshtrace {
 
 namespace {
@@ -9,8 +7,8 @@ namespace {
 // rounding never brings the origin back toward the surface.
 double toFloatAway(double x, double sign) {
   float f = static_cast<float>(x);
-  if (sign > 0.0 && double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  if (sign < 0.0 && double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  if (sign > 0.0 && double(f) < x) f = nextUp(f);
+  if (sign < 0.0 && double(f) > x) f = nextDown(f);
   return f;
 }
 }  // namespace
@@ -25,8 +23,8 @@ Vec3 spawnOrigin(const SurfacePoint& sp, const Vec3& direction) {
   Vec3 po = sp.point + offset;
   // The addition rounds to nearest, possibly back toward p: step one ulp on.
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0.0) po[i] = std::nextafter(po[i], kInfinity);
-    if (offset[i] < 0.0) po[i] = std::nextafter(po[i], -kInfinity);
+    if (offset[i] > 0.0) po[i] = nextUp(po[i]);
+    if (offset[i] < 0.0) po[i] = nextDown(po[i]);
     if (sp.precision == Precision::Single) po[i] = toFloatAway(po[i], offset[i]);
   }
   return po;
