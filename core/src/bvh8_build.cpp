@@ -64,21 +64,49 @@ void setChildOrders(Bvh8Node& node) {
   }
 }
 
+// Leaves under each binary node. Children come after their parent in the
+// binary tree.
+std::vector<std::uint32_t> leafCounts(const Bvh& binary) {
+  std::vector<std::uint32_t> leaves(binary.nodes.size(), 1);
+  for (std::size_t i = binary.nodes.size(); i-- > 0;) {
+    const BvhNode& node = binary.nodes[i];
+    if (!node.isLeaf()) leaves[i] = leaves[node.first] + leaves[node.first + 1];
+  }
+  return leaves;
+}
+
+// Collapses subtrees of the binary tree into 8-wide nodes, depth first, into
+// a vector of its own: node indices count from that vector's start.
 class Collapser {
  public:
-  Collapser(const Bvh& binary, Bvh8& out)
-      : in_(binary), out_(out), leaves_(binary.nodes.size(), 1) {
-    // Children come after their parent in the binary tree.
-    for (std::size_t i = binary.nodes.size(); i-- > 0;) {
-      const BvhNode& node = binary.nodes[i];
-      if (!node.isLeaf()) leaves_[i] = leaves_[node.first] + leaves_[node.first + 1];
-    }
-  }
+  Collapser(const Bvh& binary, const std::vector<std::uint32_t>& leaves)
+      : in_(binary), leaves_(leaves) {}
+
+  BuildVector<Bvh8Node> nodes;
+  int depth = 0;
 
   // Fills a new 8-wide node from binary interior node `b`; returns its index.
-  std::uint32_t node(std::uint32_t b, int depth) {
-    out_.depth = std::max(out_.depth, depth);
-    std::uint32_t children[kBvhWidth] = {in_.nodes[b].first, in_.nodes[b].first + 1};
+  std::uint32_t node(std::uint32_t b, int level) {
+    depth = std::max(depth, level);
+    std::uint32_t children[kBvhWidth];
+    const int n = chooseChildren(b, children);
+    const auto index = static_cast<std::uint32_t>(nodes.size());
+    nodes.emplace_back();
+    fill(nodes[index], children, n);
+    // Interior children after the node itself (depth-first order).
+    for (int i = 0; i < n; ++i)
+      if (!in_.nodes[children[i]].isLeaf()) {
+        const std::uint32_t child = node(children[i], level + 1);
+        nodes[index].first[i] = child;
+      }
+    return index;
+  }
+
+  // The binary nodes that become the children of `b`'s 8-wide node; returns
+  // how many.
+  int chooseChildren(std::uint32_t b, std::uint32_t (&children)[kBvhWidth]) const {
+    children[0] = in_.nodes[b].first;
+    children[1] = in_.nodes[b].first + 1;
     int n = 2;
     while (n < kBvhWidth) {
       // The widest interior child, or the widest of those whose whole
@@ -101,36 +129,33 @@ class Collapser {
       children[widest] = in_.nodes[split].first;
       children[n++] = in_.nodes[split].first + 1;
     }
-    const auto index = static_cast<std::uint32_t>(out_.nodes.size());
-    out_.nodes.emplace_back();
+    return n;
+  }
+
+  // The boxes, leaf ranges and child orders of `children` (interior
+  // children's indices are set by the caller).
+  void fill(Bvh8Node& out, const std::uint32_t* children, int n) const {
     for (int i = 0; i < kBvhWidth; ++i) {
       const bool used = i < n;
       const BvhNode* c = used ? &in_.nodes[children[i]] : nullptr;
       for (int a = 0; a < 3; ++a) {
-        out_.nodes[index].lo[a][i] = used ? c->bounds[a] : kEmptyLo;
-        out_.nodes[index].hi[a][i] = used ? c->bounds[a + 3] : kEmptyHi;
+        out.lo[a][i] = used ? c->bounds[a] : kEmptyLo;
+        out.hi[a][i] = used ? c->bounds[a + 3] : kEmptyHi;
       }
-      out_.nodes[index].first[i] = used && c->isLeaf() ? c->first : 0;
+      out.first[i] = used && c->isLeaf() ? c->first : 0;
       if (used && c->count > kMaxBvh8Leaf)
         throw std::length_error("BVH leaf of " + std::to_string(c->count) +
                                 " primitives, more than a node can hold");
-      out_.nodes[index].count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
+      out.count[i] = static_cast<std::uint8_t>(used ? c->count : 0);
     }
-    // Interior children after the node itself (depth-first order).
-    for (int i = 0; i < n; ++i)
-      if (!in_.nodes[children[i]].isLeaf()) {
-        const std::uint32_t child = node(children[i], depth + 1);
-        out_.nodes[index].first[i] = child;
-      }
-    return index;
+    setChildOrders(out);
   }
 
  private:
   static constexpr float kEmptyLo = std::numeric_limits<float>::infinity();
   static constexpr float kEmptyHi = -std::numeric_limits<float>::infinity();
   const Bvh& in_;
-  Bvh8& out_;
-  std::vector<std::uint32_t> leaves_;  // leaves under each binary node
+  const std::vector<std::uint32_t>& leaves_;
 };
 
 }  // namespace
@@ -149,15 +174,42 @@ Bvh8 collapseToBvh8(const Bvh& binary) {
     out.depth = 1;
     return out;
   }
-  out.nodes.reserve(binary.nodes.size() / 6 + 1);
-  Collapser(binary, out).node(0, 1);
-  // The child orders read only each node's own boxes, so they are filled
-  // in afterwards, in parallel.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.nodes.size(), 256),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i)
-                        setChildOrders(out.nodes[i]);
-                    });
+  // The root's node, then the subtree of each of its interior children,
+  // collapsed in parallel and appended in slot order: the depth-first order
+  // of one serial pass, so the tree is the same whatever the threads do.
+  const std::vector<std::uint32_t> leaves = leafCounts(binary);
+  const Collapser top(binary, leaves);
+  std::uint32_t children[kBvhWidth];
+  const int n = top.chooseChildren(0, children);
+  std::vector<int> interior;
+  for (int i = 0; i < n; ++i)
+    if (!binary.nodes[children[i]].isLeaf()) interior.push_back(i);
+  std::vector<Collapser> parts(interior.size(), top);
+  tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t k) {
+    parts[k].nodes.reserve(leaves[children[interior[k]]] / 3 + 1);
+    parts[k].node(children[interior[k]], 2);
+  });
+  std::vector<std::uint32_t> base(parts.size());
+  std::size_t total = 1;
+  out.depth = 1;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    base[k] = static_cast<std::uint32_t>(total);
+    total += parts[k].nodes.size();
+    out.depth = std::max(out.depth, parts[k].depth);
+  }
+  out.nodes.resize(total);  // every node is assigned below
+  top.fill(out.nodes[0], children, n);
+  for (std::size_t k = 0; k < parts.size(); ++k) out.nodes[0].first[interior[k]] = base[k];
+  tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t k) {
+    Bvh8Node* to = out.nodes.data() + base[k];
+    for (const Bvh8Node& node : parts[k].nodes) {
+      *to = node;
+      // Interior children (a used slot, lo <= hi, with no primitives).
+      for (int i = 0; i < kBvhWidth; ++i)
+        if (to->count[i] == 0 && to->lo[0][i] <= to->hi[0][i]) to->first[i] += base[k];
+      ++to;
+    }
+  });
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshtrace/build_vector.h"
 #include "meshtrace/bvh.h"
 
 namespace meshtrace {
@@ -38,7 +39,7 @@ static_assert(sizeof(Bvh8Node) == 256);
 inline constexpr std::uint32_t kMaxBvh8Leaf = 255;
 
 struct Bvh8 {
-  std::vector<Bvh8Node> nodes;       // nodes[0] is the root, unless the root is a leaf
+  BuildVector<Bvh8Node> nodes;       // nodes[0] is the root, unless the root is a leaf
   std::vector<std::uint32_t> order;  // primitive indices, grouped by leaf
   std::uint32_t rootCount = 0;       // primitives when the whole tree is one leaf
   // The root's box, (x, y, z, z) each, for testing a root leaf in one go.
