@@ -1,5 +1,4 @@
 // Collapsing a binary BVH into an 8-wide one (see bvh8.h).
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
