@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "meshtrace/bvh8.h"
@@ -159,10 +160,10 @@ class Collapser {
 
 }  // namespace
 
-Bvh8 collapseToBvh8(const Bvh& binary) {
+Bvh8 collapseToBvh8(Bvh binary) {
   Bvh8 out;
   if (binary.empty()) return out;
-  out.order = binary.order;
+  out.order = std::move(binary.order);
   const BvhNode& root = binary.nodes[0];
   for (int k = 0; k < 4; ++k) {
     out.rootLo[k] = root.bounds[std::min(k, 2)];

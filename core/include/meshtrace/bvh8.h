@@ -56,7 +56,8 @@ struct Bvh8 {
 // Each node takes its binary node's two children, then repeatedly replaces
 // an interior child by its own two children while there is room for eight:
 // first the widest child whose whole subtree still fits, else the widest.
-// Throws std::length_error for a leaf larger than kMaxBvh8Leaf.
-Bvh8 collapseToBvh8(const Bvh& binary);
+// Throws std::length_error for a leaf larger than kMaxBvh8Leaf. Takes the
+// binary tree by value: its primitive order moves into the result.
+Bvh8 collapseToBvh8(Bvh binary);
 
 }  // namespace meshtrace
