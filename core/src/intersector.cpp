@@ -70,6 +70,26 @@ bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counter
   return closest.found();
 }
 
+void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
+                                        Counters& counters) const {
+  if (!bvh_) {
+    for (int r = 0; r < kPacketSize; ++r) found[r] = closestHit(rays[r], tMin, hits[r], counters);
+    return;
+  }
+  const PrimitiveQuery queries[kPacketSize] = {
+      {scene_, rays[0], options_.triangle, tMin, counters},
+      {scene_, rays[1], options_.triangle, tMin, counters},
+      {scene_, rays[2], options_.triangle, tMin, counters},
+      {scene_, rays[3], options_.triangle, tMin, counters}};
+  ClosestHit closest[kPacketSize] = {ClosestHit(hits[0]), ClosestHit(hits[1]),
+                                     ClosestHit(hits[2]), ClosestHit(hits[3])};
+  const PrimitiveQuery* queryOf[kPacketSize] = {&queries[0], &queries[1], &queries[2],
+                                                &queries[3]};
+  ClosestHit* closestOf[kPacketSize] = {&closest[0], &closest[1], &closest[2], &closest[3]};
+  bvh_->closestHitPacket(queryOf, closestOf, counters);
+  for (int r = 0; r < kPacketSize; ++r) found[r] = closest[r].found();
+}
+
 bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
                                 const PrimitiveRef* start) const {
   if (external_) return external_->occluded(ray, tMin, tMax, counters);

@@ -5,25 +5,23 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+
 #include "meshtrace/integrator.h"
 
 namespace meshtrace {
 
 namespace {
-// Runs body(x, y, row, counters) for every pixel, in 16x16 tiles spread over
-// `threads` workers (0: all cores), where y = 0 is the bottom row and `row`
-// the storage row (0 at the top).
-template <typename Body>
-Counters forEachPixel(int width, int height, int threads, const Body& body) {
+// Runs tile(rows, cols, counters) over a grid of `height` rows and `width`
+// columns in tiles of `grain` x `grain`, spread over `threads` workers (0:
+// all cores).
+template <typename Tile>
+Counters forEachTile(int width, int height, int grain, int threads, const Tile& tile) {
   tbb::combinable<Counters> perThread;
   const auto run = [&] {
-    tbb::parallel_for(tbb::blocked_range2d<int>(0, height, 16, 0, width, 16),
-                      [&](const tbb::blocked_range2d<int>& r) {
-                        Counters& counters = perThread.local();
-                        for (int row = r.rows().begin(); row < r.rows().end(); ++row)
-                          for (int x = r.cols().begin(); x < r.cols().end(); ++x)
-                            body(x, height - 1 - row, row, counters);
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(0, height, grain, 0, width, grain),
+        [&](const tbb::blocked_range2d<int>& r) { tile(r.rows(), r.cols(), perThread.local()); });
   };
   if (threads > 0) {
     tbb::task_arena arena(threads);
@@ -45,9 +43,33 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
   const Scene& scene = intersector.scene();
   const Integrator integrator(intersector);
   Image image(scene.camera.width(), scene.camera.height());
-  const Counters total = forEachPixel(
-      image.width, image.height, threads,
-      [&](int x, int y, int row, Counters& c) { image.at(x, row) = integrator.pixel(x, y, c); });
+  const int width = image.width, height = image.height;
+  // Pixels go in 2x2 quads whose primary rays are traced together
+  // (Integrator::quad), in tiles of 8x8 quads. The quads sit on even
+  // storage rows and columns whatever the tiling, so the work done does not
+  // depend on the thread count; a quad cut by the image's edge goes pixel
+  // by pixel. Storage row `row` is y = height - 1 - row (y = 0 at the
+  // bottom).
+  const auto tile = [&](const tbb::blocked_range<int>& quadRows,
+                        const tbb::blocked_range<int>& quadCols, Counters& c) {
+    for (int qr = quadRows.begin(); qr < quadRows.end(); ++qr)
+      for (int qc = quadCols.begin(); qc < quadCols.end(); ++qc) {
+        const int row = 2 * qr, x = 2 * qc;
+        if (row + 1 < height && x + 1 < width) {
+          Color quad[kPacketSize];
+          integrator.quad(x, height - 2 - row, quad, c);
+          image.at(x, row + 1) = quad[0];
+          image.at(x + 1, row + 1) = quad[1];
+          image.at(x, row) = quad[2];
+          image.at(x + 1, row) = quad[3];
+          continue;
+        }
+        for (int r = row; r < std::min(row + 2, height); ++r)
+          for (int px = x; px < std::min(x + 2, width); ++px)
+            image.at(px, r) = integrator.pixel(px, height - 1 - r, c);
+      }
+  };
+  const Counters total = forEachTile((width + 1) / 2, (height + 1) / 2, 8, threads, tile);
   if (counters) *counters += total;
   return image;
 }
@@ -67,10 +89,14 @@ BoxHitCounts countBoxHits(const Scene& scene, int threads) {
   out.width = scene.camera.width();
   out.height = scene.camera.height();
   out.counts.assign(static_cast<std::size_t>(out.width) * out.height, 0);
-  forEachPixel(out.width, out.height, threads, [&](int x, int y, int row, Counters&) {
-    out.counts[static_cast<std::size_t>(row) * out.width + x] =
-        boxHitCount(scene, scene.camera.primaryRay(x, y));
-  });
+  forEachTile(
+      out.width, out.height, 16, threads,
+      [&](const tbb::blocked_range<int>& rows, const tbb::blocked_range<int>& cols, Counters&) {
+        for (int row = rows.begin(); row < rows.end(); ++row)
+          for (int x = cols.begin(); x < cols.end(); ++x)
+            out.counts[static_cast<std::size_t>(row) * out.width + x] =
+                boxHitCount(scene, scene.camera.primaryRay(x, out.height - 1 - row));
+      });
   for (int n : out.counts) out.maxCount = std::max(out.maxCount, n);
   return out;
 }

@@ -170,6 +170,74 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
   counters.nodeVisits += visits;
 }
 
+void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit* const* closest,
+                                Counters& counters) const {
+  const SlabRay rays[kPacketSize] = {slabRay(*queries[0]), slabRay(*queries[1]),
+                                     slabRay(*queries[2]), slabRay(*queries[3])};
+  for (int r = 1; r < kPacketSize; ++r)
+    if (rays[r].octant != rays[0].octant) {
+      for (int k = 0; k < kPacketSize; ++k) closestHit(*queries[k], *closest[k], counters);
+      return;
+    }
+  for (int r = 0; r < kPacketSize; ++r)
+    for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
+      queries[r]->offerShape(ObjectKind::Plane, i, *closest[r]);
+  const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
+  double tMin[kPacketSize];
+  const double* tBest[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) {
+    tMin[r] = queries[r]->tMin();
+    tBest[r] = &closest[r]->t();
+  }
+  std::uint64_t visits = 0;
+  const auto offerMesh = [&](std::uint32_t mesh, std::uint32_t rays) MESHTRACE_INLINE_LEAF {
+    if (mesh != kMeshBvh) {
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
+      for (int r = 0; r < kPacketSize; ++r)
+        if (rays >> r & 1)
+          for (std::uint32_t t = 0; t < count; ++t)
+            queries[r]->offerTriangle(mesh, t, *closest[r]);
+      return;
+    }
+    const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      LazyBlockRay blockRay[kPacketSize] = {
+          {queries[0]->ray(), meshBvh_.frame, queries[0]->kernel()},
+          {queries[1]->ray(), meshBvh_.frame, queries[1]->kernel()},
+          {queries[2]->ray(), meshBvh_.frame, queries[2]->kernel()},
+          {queries[3]->ray(), meshBvh_.frame, queries[3]->kernel()}};
+      const auto offerBlock = [&](std::uint32_t block, std::uint32_t n,
+                                  std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
+        for (int r = 0; r < kPacketSize; ++r) {
+          if (!(meeting >> r & 1)) continue;
+          const PrimitiveQuery& query = *queries[r];
+          ClosestHit& best = *closest[r];
+          forEachCandidate(blockRay[r].get(), meshBvh_.blocks[block], n, locate, tMin[r],
+                           best.t(), counters, [&](const PrimitiveRef& t) {
+                             query.offerTriangle(t.object, t.triangle, best);
+                             return false;
+                           });
+        }
+      };
+      traverseClosestPacket(meshBvh_.tree, slab, tMin, tBest, rays, visits, offerBlock);
+    };
+    withLocator(meshBvh_.triangles, traverse);
+  };
+  const auto offerObjects = [&](std::uint32_t first, std::uint32_t n,
+                                std::uint32_t rays) MESHTRACE_INLINE_LEAF {
+    for (std::uint32_t k = first; k < first + n; ++k) {
+      const Object& o = objects_[top_.order[k]];
+      if (o.kind == ObjectKind::Mesh) {
+        offerMesh(o.index, rays);
+      } else {
+        for (int r = 0; r < kPacketSize; ++r)
+          if (rays >> r & 1) queries[r]->offerShape(o.kind, o.index, *closest[r]);
+      }
+    }
+  };
+  traverseClosestPacket(top_, slab, tMin, tBest, 0xfu, visits, offerObjects);
+  counters.nodeVisits += visits;
+}
+
 bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const {
   for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
     if (query.shapeBlocks(ObjectKind::Plane, i, tMax)) return true;

@@ -67,15 +67,16 @@ Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
   return color;
 }
 
-// Colour seen along `ray` at recursion level `level` (0 = primary); `start`
-// is the primitive a reflected ray leaves.
 template <typename Observer>
 Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
-                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr) {
+                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr);
+
+// The rest of whittedTrace, given the ray's closest hit (`found` false: none).
+template <typename Observer>
+Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool found, const Hit& hit,
+                   int level, Counters& counters, Observer& observer) {
   const Scene& scene = intersector.scene();
-  observer.beginBounce(level, ray);
-  Hit hit;
-  if (!intersector.closestHit(ray, kSpawnTMin, hit, counters, start)) {
+  if (!found) {
     observer.endBounce(scene.background);
     return scene.background;
   }
@@ -99,6 +100,17 @@ Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int leve
       mirror * whittedTrace(intersector, bounce, level + 1, counters, observer, &sp.primitive);
   observer.endBounce(color);
   return color;
+}
+
+// Colour seen along `ray` at recursion level `level` (0 = primary); `start`
+// is the primitive a reflected ray leaves.
+template <typename Observer>
+Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
+                   Counters& counters, Observer& observer, const PrimitiveRef* start) {
+  observer.beginBounce(level, ray);
+  Hit hit;
+  const bool found = intersector.closestHit(ray, kSpawnTMin, hit, counters, start);
+  return whittedShade(intersector, ray, found, hit, level, counters, observer);
 }
 
 }  // namespace meshtrace

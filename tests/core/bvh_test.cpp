@@ -10,6 +10,7 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <sstream>
@@ -321,6 +322,93 @@ TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
       const std::string label = std::string(toString(test)) + "/" + toString(precision);
       expectAgreement(label.c_str(), compare(scene, 40000, 6, {test, precision}));
     }
+}
+
+// Whether two directions have the same octant (the sign bits, -0 included,
+// as the slab ray takes them).
+bool sameOctant(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::signbit(a[k]) != std::signbit(b[k])) return false;
+  return true;
+}
+
+// Packets of four rays through SceneIntersector::closestHitPacket against
+// brute force, ray by ray. Most packets are what a camera makes: one origin
+// and directions a little apart, or one direction (axis-parallel ones too)
+// from origins a little apart; every fourth is four unrelated rays, which
+// seldom share an octant and go ray by ray.
+struct PacketCheck {
+  std::uint64_t rays = 0, hits = 0, differences = 0, sharedOctant = 0;
+  std::string example;
+};
+PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed) {
+  const SceneIntersector bvh(scene, {AccelMethod::Bvh});
+  const SceneIntersector brute(scene, {AccelMethod::None});
+  const Aabb box = sceneBox(scene);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PacketCheck check;
+  Counters c;
+  for (int p = 0; p < packets; ++p) {
+    Ray rays[kPacketSize];
+    const Ray lead = randomRay(scene, box, rng);
+    const double spread = p % 2 ? 1e-3 : 1e-2;
+    for (int r = 0; r < kPacketSize; ++r) {
+      if (p % 4 == 3) {
+        rays[r] = randomRay(scene, box, rng);
+      } else if (p % 4 == 2) {
+        rays[r] = {lead.origin + spread * box.extent() * Vec3(u(rng), u(rng), u(rng)),
+                   lead.direction};
+      } else {
+        const Vec3 d = lead.direction + spread * Vec3(u(rng), u(rng), u(rng));
+        rays[r] = {lead.origin, r == 0 ? lead.direction : glm::normalize(d)};
+      }
+    }
+    bool shared = true;
+    for (const Ray& r : rays) shared = shared && sameOctant(r.direction, rays[0].direction);
+    check.sharedOctant += shared;
+    const double tMin = p % 3 == 0 ? kSpawnTMin : 0.0;
+    Hit hits[kPacketSize];
+    bool found[kPacketSize];
+    bvh.closestHitPacket(rays, tMin, hits, found, c);
+    for (int r = 0; r < kPacketSize; ++r) {
+      Hit b;
+      const bool fb = brute.closestHit(rays[r], tMin, b, c);
+      ++check.rays;
+      check.hits += fb;
+      if (!sameHit(found[r], hits[r], fb, b)) {
+        ++check.differences;
+        if (check.example.empty())
+          check.example = "packet " + describe(rays[r], hits[r]) + " | brute force " +
+                          describe(rays[r], b);
+      }
+    }
+  }
+  return check;
+}
+
+TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
+  std::mt19937_64 rng(21);
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 2);
+  const Scene scenes[] = {
+      meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))}),
+      meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
+                 makeMesh("box", makeGriddedBox(Vec3(-0.5), Vec3(0.7), 3))}),
+      objectScene(rng)};
+  const char* labels[] = {"knot", "twin meshes", "objects"};
+  for (int i = 0; i < 3; ++i) {
+    const PacketCheck check = comparePackets(scenes[i], 40000, 31 + i);
+    std::printf("[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
+                "octant), %llu hits; differences %llu\n",
+                labels[i], static_cast<unsigned long long>(check.rays),
+                static_cast<unsigned long long>(check.sharedOctant),
+                static_cast<unsigned long long>(check.rays / kPacketSize),
+                static_cast<unsigned long long>(check.hits),
+                static_cast<unsigned long long>(check.differences));
+    EXPECT_GT(check.hits, check.rays / 5) << labels[i];
+    EXPECT_GT(check.sharedOctant, check.rays / kPacketSize / 2) << labels[i];
+    EXPECT_EQ(check.differences, 0u) << labels[i] << ": " << check.example;
+  }
 }
 
 // Structure: every primitive in exactly one leaf, every box inside its

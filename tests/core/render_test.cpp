@@ -1,5 +1,5 @@
-// Whole-image rendering: independent of the thread count, y = 0 the bottom
-// row, and the bounding-box debug image.
+// Whole-image rendering: independent of the thread count, each pixel what
+// it is alone, y = 0 the bottom row, and the bounding-box debug image.
 #include "meshtrace/render.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include "../support/files.h"
 #include "../support/paths.h"
 #include "../support/scene_snippets.h"
+#include "meshtrace/integrator.h"
 #include "meshtrace/scene_parser.h"
 
 namespace meshtrace {
@@ -52,6 +53,21 @@ TEST(Render, CountsTheSameWorkForOneAndTwoThreads) {
   render(scene, two, &c2);
   EXPECT_EQ(c1.primaryRays, 37u * 23u);
   EXPECT_EQ(c1.describe(), c2.describe());
+}
+
+// The image traces its primary rays in 2x2 packets (odd edges pixel by
+// pixel); each pixel must still be the colour brute force gives it alone.
+TEST(Render, GivesEachPixelTheColourItHasAlone) {
+  const Scene scene = busyScene();
+  const Image image = render(scene, {});
+  const SceneIntersector brute(scene, {AccelMethod::None});
+  const Integrator integrator(brute);
+  Counters c;
+  int differing = 0;
+  for (int row = 0; row < image.height; ++row)
+    for (int x = 0; x < image.width; ++x)
+      differing += integrator.pixel(x, image.height - 1 - row, c) != image.at(x, row);
+  EXPECT_EQ(differing, 0);
 }
 
 TEST(Render, StoresTheBottomRowLast) {

@@ -14,6 +14,10 @@ class Integrator {
   // Colour at image position (x, y) in pixels of the scene's camera; y = 0 is
   // the bottom row.
   Color pixel(double x, double y, Counters& counters) const;
+  // The colours of the 2x2 pixels (x, y), (x + 1, y), (x, y + 1) and
+  // (x + 1, y + 1), in that order: pixel() of each, with their primary rays
+  // traced as one packet.
+  void quad(double x, double y, Color out[4], Counters& counters) const;
   // The same through another camera (the viewer's, once moved).
   Color pixel(const Camera& camera, double x, double y, Counters& counters) const;
 

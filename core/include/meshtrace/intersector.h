@@ -55,6 +55,12 @@ class SceneIntersector {
   // (SurfacePoint::primitive): a triangle there is not tested (spawn.h).
   bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
                   const PrimitiveRef* start = nullptr) const;
+  // closestHit for kPacketSize rays (scene_bvh.h) with no start primitive,
+  // answered exactly as four calls would be; with --accel bvh, rays that
+  // share an octant of directions, such as the primary rays of a 2x2 pixel
+  // quad, are traced together. found[r] tells whether ray r hit.
+  void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
+                        Counters& counters) const;
   // True if anything lies at tMin < t < tMax; `start` as above.
   bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
                 const PrimitiveRef* start = nullptr) const;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "meshtrace/bvh8.h"
+#include "meshtrace/bvh8_packet.h"
 #include "meshtrace/bvh8_traverse.h"
 #include "meshtrace/counters.h"
 #include "meshtrace/scene.h"
@@ -75,6 +76,10 @@ class SceneBvh {
 
   // Offers every primitive the ray may hit to `closest` (see primitive_query.h).
   void closestHit(const PrimitiveQuery& query, ClosestHit& closest, Counters& counters) const;
+  // closestHit for four rays at once (kPacketSize), each with its own query
+  // and ClosestHit; the same hits as four closestHit calls.
+  void closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit* const* closest,
+                        Counters& counters) const;
   // True if some primitive is hit at tMin < t < tMax.
   bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
 

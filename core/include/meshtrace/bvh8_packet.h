@@ -1,0 +1,126 @@
+#pragma once
+// Closest-hit traversal of a Bvh8 by a packet of four rays that share an
+// octant of directions, such as the primary rays of a 2x2 pixel quad. Each
+// node is fetched and ordered once for the packet; every ray still runs its
+// own conservative slab test (BoxRay8) and its own leaf tests, so each ray
+// visits at least the leaves it would visit alone and finds the same hit.
+#include <xmmintrin.h>
+
+#include <cstdint>
+#include <limits>
+
+#include "meshtrace/bvh8_traverse.h"
+
+namespace meshtrace {
+
+inline constexpr int kPacketSize = 4;
+
+namespace bvh8 {
+
+struct PacketEntry {
+  std::uint32_t first, count;  // as Entry
+  float tEnter;                // the nearest entry among the packet's rays
+  std::uint32_t rays;          // the rays that meet the box (bit r: ray r)
+};
+
+// Bit r of the result: bit `child` of byte r of `perRay` (ray r's child mask).
+// The multiply gathers bits 0, 8, 16 and 24 into bits 28-31; no two of
+// the partial products land on the same bit, so nothing carries.
+inline std::uint32_t raysMeeting(std::uint32_t perRay, int child) {
+  const std::uint64_t bits = (perRay >> child) & 0x01010101u;
+  return static_cast<std::uint32_t>((bits * 0x10204080u) >> 28) & 0xfu;
+}
+
+}  // namespace bvh8
+
+// Calls leaf(first, count, rays) for the leaves whose boxes meet some of the
+// packet's rays; `rays` names those that do (within their own [tMin, tBest]).
+// All rays must share slab[0]'s octant. tBest[r] is read again after every
+// leaf call, as in traverseClosest.
+template <typename Leaf>
+[[gnu::always_inline]] inline void traverseClosestPacket(
+    const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* const* tBest,
+    std::uint32_t active, std::uint64_t& visits, Leaf&& leaf) {
+  if (bvh.empty() || active == 0) return;
+  if (bvh.nodes.empty()) {
+    std::uint32_t meeting = 0;
+    for (int r = 0; r < kPacketSize; ++r)
+      if ((active >> r & 1) &&
+          slab[r]->meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(*tBest[r])))
+        meeting |= 1u << r;
+    if (meeting) leaf(0, bvh.rootCount, meeting);
+    return;
+  }
+  const BoxRay8 ray[kPacketSize] = {BoxRay8(*slab[0]), BoxRay8(*slab[1]), BoxRay8(*slab[2]),
+                                    BoxRay8(*slab[3])};
+  __m128 tMinV[kPacketSize];
+  float tMax[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) {
+    tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
+    tMax[r] = bvh8::atLeast(*tBest[r]);
+  }
+  const int octant = ray[0].octant();
+  bvh8::PacketEntry stack[bvh8::kStackSize];
+  int top = 0;
+  const Bvh8Node* nodes = bvh.nodes.data();
+  std::uint64_t visited = 0;
+  bvh8::PacketEntry next{0, 0, 0.0f, active};
+  for (;;) {
+    if (next.count == 0) {
+      const Bvh8Node& node = nodes[next.first];
+      ++visited;
+      alignas(16) float tEnter[kPacketSize][kBvhWidth];
+      std::uint32_t perRay = 0;
+      __m128 nearLow = _mm_set1_ps(std::numeric_limits<float>::infinity()), nearHigh = nearLow;
+      for (int r = 0; r < kPacketSize; ++r) {
+        if (!(next.rays >> r & 1)) continue;
+        perRay |= ray[r].intersect(node, tMinV[r], _mm_set1_ps(tMax[r]), tEnter[r]) << (8 * r);
+        // Rays that miss a child lower its entry too: still a bound below
+        // the rays that meet it, which is all the culling below needs.
+        nearLow = _mm_min_ps(nearLow, _mm_load_ps(tEnter[r]));
+        nearHigh = _mm_min_ps(nearHigh, _mm_load_ps(tEnter[r] + 4));
+      }
+      const std::uint32_t any = (perRay | perRay >> 8 | perRay >> 16 | perRay >> 24) & 0xffu;
+      if (any) {
+        alignas(16) float nearest[kBvhWidth];
+        _mm_store_ps(nearest, nearLow);
+        _mm_store_ps(nearest + 4, nearHigh);
+        if ((any & (any - 1)) == 0) {
+          const int i = __builtin_ctz(any);
+          next = {node.first[i], node.count[i], nearest[i], bvh8::raysMeeting(perRay, i)};
+        } else {
+          // Farthest first, so that the nearest is popped next.
+          const std::uint32_t order = node.childOrder(octant);
+#pragma GCC unroll 8
+          for (int k = kBvhWidth - 1; k >= 0; --k) {
+            const unsigned slot = order >> (3 * k) & 7;
+            stack[top] = {node.first[slot], node.count[slot], nearest[slot],
+                          bvh8::raysMeeting(perRay, static_cast<int>(slot))};
+            top += static_cast<int>(any >> slot & 1);
+          }
+          next = stack[--top];
+        }
+        continue;
+      }
+    } else {
+      leaf(next.first, next.count, next.rays);
+      for (int r = 0; r < kPacketSize; ++r) tMax[r] = bvh8::atLeast(*tBest[r]);
+    }
+    // Resume with the nearest postponed child that may still hold a hit for
+    // one of its rays.
+    for (;;) {
+      if (top == 0) {
+        visits += visited;
+        return;
+      }
+      next = stack[--top];
+      std::uint32_t still = 0;
+      for (int r = 0; r < kPacketSize; ++r)
+        still |= static_cast<std::uint32_t>(next.tEnter <= tMax[r]) << r;
+      next.rays &= still;
+      if (next.rays) break;
+    }
+  }
+}
+
+}  // namespace meshtrace
