@@ -67,6 +67,28 @@ RTCRayHit EmbreeIntersector::prepare(const Ray& ray, double tMin, double tMax) {
   return rh;
 }
 
+RTCRayHit4 EmbreeIntersector::pack(const RTCRayHit* rays) {
+  RTCRayHit4 p{};
+  for (int r = 0; r < 4; ++r) {
+    const RTCRay& ray = rays[r].ray;
+    p.ray.org_x[r] = ray.org_x;
+    p.ray.org_y[r] = ray.org_y;
+    p.ray.org_z[r] = ray.org_z;
+    p.ray.tnear[r] = ray.tnear;
+    p.ray.dir_x[r] = ray.dir_x;
+    p.ray.dir_y[r] = ray.dir_y;
+    p.ray.dir_z[r] = ray.dir_z;
+    p.ray.time[r] = ray.time;
+    p.ray.tfar[r] = ray.tfar;
+    p.ray.mask[r] = ray.mask;
+    p.ray.id[r] = ray.id;
+    p.ray.flags[r] = ray.flags;
+    p.hit.geomID[r] = RTC_INVALID_GEOMETRY_ID;
+    p.hit.instID[0][r] = RTC_INVALID_GEOMETRY_ID;
+  }
+  return p;
+}
+
 bool EmbreeIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counters& c) const {
   bool found = false;
   for (std::uint32_t i = 0; i < scene_ref_.planes.size(); ++i) {

@@ -33,6 +33,12 @@ class EmbreeIntersector : public ExternalIntersector {
     rtcIntersect1(scene_, &context, &rayHit);
     return rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
   }
+  // Four rays as one packet (`valid`: -1 for a ray to trace, 0 to skip).
+  void intersect4(const int* valid, RTCRayHit4& rayHit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect4(valid, scene_, &context, &rayHit);
+  }
   bool occluded1(RTCRay& ray) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -40,6 +46,8 @@ class EmbreeIntersector : public ExternalIntersector {
     return ray.tfar < 0.0f;
   }
   static RTCRayHit prepare(const Ray& ray, double tMin, double tMax);
+  // Four prepared rays in the packet layout.
+  static RTCRayHit4 pack(const RTCRayHit* rays);
 
   double buildSeconds() const { return buildSeconds_; }
   // Memory Embree holds after the build (its BVH and vertex buffers), plus

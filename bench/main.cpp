@@ -43,8 +43,10 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// Mrays/s on 1 thread, on all.
 struct Throughput {
-  double primary[2] = {0, 0};  // Mrays/s on 1 thread, on all
+  double primary[2] = {0, 0};        // ray by ray (Embree: rtcIntersect1)
+  double primaryPacket[2] = {0, 0};  // 2x2 quads (Embree: rtcIntersect4)
   double shadow[2] = {0, 0};
 };
 
@@ -121,6 +123,20 @@ auto oursPrimary(const SceneIntersector& is, const RaySet& primary) {
     is.closestHit(primary.rays[i], 0.0, hit, c);
   };
 }
+// Call k: packet k, or past the packets one leftover ray (RaySet::packets).
+auto oursPrimaryPackets(const SceneIntersector& is, const RaySet& primary) {
+  return [&is, &primary](std::size_t k) {
+    Counters c;
+    if (k < primary.packets) {
+      Hit hits[kPacketSize];
+      bool found[kPacketSize];
+      is.closestHitPacket(&primary.rays[kPacketSize * k], 0.0, hits, found, c);
+    } else {
+      Hit hit;
+      is.closestHit(primary.rays[k + (kPacketSize - 1) * primary.packets], 0.0, hit, c);
+    }
+  };
+}
 auto oursShadow(const SceneIntersector& is, const RaySet& shadow) {
   return [&is, &shadow](std::size_t i) {
     Counters c;
@@ -138,18 +154,28 @@ void measureSlow(const SceneIntersector& is, const RaySet& primary, const RaySet
   }
 }
 
-// Mrays/s of each `trace` over all n rays, best of kSideBySidePasses passes
-// taken in turn (the first engine, the second, ..., the first again), so
-// that a slow spell of this shared machine falls on every engine alike.
+// A way of tracing a ray set: trace(k) for every k < calls.
+template <typename Trace>
+struct Tracer {
+  std::size_t calls;
+  Trace trace;
+};
+template <typename Trace>
+Tracer(std::size_t, Trace) -> Tracer<Trace>;
+
+// Mrays/s of each tracer over the same n rays, best of kSideBySidePasses
+// passes taken in turn (the first engine, the second, ..., the first
+// again), so that a slow spell of this shared machine falls on every engine
+// alike.
 constexpr int kSideBySidePasses = 5;
 template <typename... Trace>
 std::array<double, sizeof...(Trace)> interleavedMrays(std::size_t n, int threads,
-                                                      const Trace&... trace) {
+                                                      const Tracer<Trace>&... tracer) {
   std::array<double, sizeof...(Trace)> best;
   best.fill(1e300);
   for (int pass = 0; pass < kSideBySidePasses; ++pass) {
     std::size_t k = 0;
-    ((best[k] = std::min(best[k], timeRays(n, 1, threads, 1, trace)), ++k), ...);
+    ((best[k] = std::min(best[k], timeRays(tracer.calls, 1, threads, 1, tracer.trace)), ++k), ...);
   }
   for (double& s : best) s = double(n) / s * 1e-6;
   return best;
@@ -170,21 +196,45 @@ void measureSideBySide(const SceneIntersector& ours, const EmbreeIntersector& ro
       engine->intersect1(rh);
     };
   };
+  // Packet k as one rtcIntersect4 call, the leftover rays one by one.
+  std::vector<RTCRayHit4> p4;
+  for (std::size_t k = 0; k < primary.packets; ++k)
+    p4.push_back(EmbreeIntersector::pack(&p[kPacketSize * k]));
+  const auto embreePackets = [&p, &p4, &primary](const EmbreeIntersector& e) {
+    return [&p, &p4, &primary, engine = &e](std::size_t k) {
+      alignas(16) static constexpr int kValid[4] = {-1, -1, -1, -1};
+      if (k < p4.size()) {
+        RTCRayHit4 rh = p4[k];
+        engine->intersect4(kValid, rh);
+      } else {
+        RTCRayHit rh = p[k + (kPacketSize - 1) * primary.packets];
+        engine->intersect1(rh);
+      }
+    };
+  };
   const auto embreeShadow = [&s](const EmbreeIntersector& e) {
     return [&s, engine = &e](std::size_t i) {
       RTCRay r = s[i].ray;
       engine->occluded1(r);
     };
   };
+  const std::size_t calls = primary.packetCalls();
   for (int k = 0; k < 2; ++k) {
     const int t = k == 0 ? 1 : threads;
-    const auto pr = interleavedMrays(p.size(), t, oursPrimary(ours, primary),
-                                     embreePrimary(robust), embreePrimary(hq));
-    const auto sh = interleavedMrays(s.size(), t, oursShadow(ours, shadow),
-                                     embreeShadow(robust), embreeShadow(hq));
+    const auto pr = interleavedMrays(
+        p.size(), t, Tracer{p.size(), oursPrimary(ours, primary)},
+        Tracer{p.size(), embreePrimary(robust)}, Tracer{p.size(), embreePrimary(hq)},
+        Tracer{calls, oursPrimaryPackets(ours, primary)}, Tracer{calls, embreePackets(robust)},
+        Tracer{calls, embreePackets(hq)});
+    const auto sh = interleavedMrays(s.size(), t, Tracer{s.size(), oursShadow(ours, shadow)},
+                                     Tracer{s.size(), embreeShadow(robust)},
+                                     Tracer{s.size(), embreeShadow(hq)});
     f.ours.rays.primary[k] = pr[0];
     f.embree.rays.primary[k] = pr[1];
     f.embreeHq.rays.primary[k] = pr[2];
+    f.ours.rays.primaryPacket[k] = pr[3];
+    f.embree.rays.primaryPacket[k] = pr[4];
+    f.embreeHq.rays.primaryPacket[k] = pr[5];
     f.ours.rays.shadow[k] = sh[0];
     f.embree.rays.shadow[k] = sh[1];
     f.embreeHq.rays.shadow[k] = sh[2];
@@ -319,9 +369,15 @@ void printScene(const SceneFigures& f, int threads) {
   row("bytes / triangle, with the mesh", [](const E& e) { return e.bytesPerTriangle; }, "%.1f");
   const std::string all = std::to_string(threads) + " threads";
   const auto mr = [](const E& e, double v) { return e.measured ? O(v) : O(); };
-  row("primary Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.primary[0]); }, "%.3g");
-  row(("primary Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.primary[1]); },
+  row("primary Mrays/s, 1 thread, ray by ray", [&](const E& e) { return mr(e, e.rays.primary[0]); },
       "%.3g");
+  row(("primary Mrays/s, " + all + ", ray by ray").c_str(),
+      [&](const E& e) { return mr(e, e.rays.primary[1]); }, "%.3g");
+  const auto packets = [](const E& e) { return e.rays.primaryPacket[0] > 0; };
+  row("primary Mrays/s, 1 thread, 2x2 packets",
+      [&](const E& e) { return packets(e) ? O(e.rays.primaryPacket[0]) : O(); }, "%.3g");
+  row(("primary Mrays/s, " + all + ", 2x2 packets").c_str(),
+      [&](const E& e) { return packets(e) ? O(e.rays.primaryPacket[1]) : O(); }, "%.3g");
   row("shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.3g");
   row(("shadow Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.shadow[1]); },
       "%.3g");
@@ -334,24 +390,30 @@ void printScene(const SceneFigures& f, int threads) {
 void printSummary(const std::vector<SceneFigures>& all) {
   std::printf("\n### Summary: ours / Embree robust (build, memory, time: lower is better; "
               "Mrays/s: higher is better)\n\n"
-              "| scene | triangles | load ms | build | B/tri structure | B/tri with mesh | primary 1T | primary all | "
+              "Primary rays: ours in 2x2 packets, as the renderer traces them, against "
+              "rtcIntersect1; then ours ray by ray against rtcIntersect1, and both engines' "
+              "packets (ours against rtcIntersect4).\n\n"
+              "| scene | triangles | load ms | build | B/tri structure | B/tri with mesh | "
+              "primary 1T | primary all | primary 1T ray by ray | primary 1T packets, both | "
               "shadow 1T | shadow all | full run | primary 1T vs HQ | aabb→bvh primary 1T |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const SceneFigures& f : all) {
     const auto& o = f.ours;
     const auto& e = f.embree;
-    std::printf("| %s | %zu | %.0f | %s | %s (%s) | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-                f.name.c_str(), f.triangles, f.loadMs, ratio(o.buildMs, e.buildMs).c_str(),
-                cell(o.structureBytesPerTriangle).c_str(),
-                ratio(o.structureBytesPerTriangle, e.structureBytesPerTriangle).c_str(),
-                ratio(o.bytesPerTriangle, e.bytesPerTriangle).c_str(),
-                ratio(o.rays.primary[0], e.rays.primary[0]).c_str(),
-                ratio(o.rays.primary[1], e.rays.primary[1]).c_str(),
-                ratio(o.rays.shadow[0], e.rays.shadow[0]).c_str(),
-                ratio(o.rays.shadow[1], e.rays.shadow[1]).c_str(),
-                ratio(o.renderMs, e.renderMs).c_str(),
-                ratio(o.rays.primary[0], f.embreeHq.rays.primary[0]).c_str(),
-                f.aabb.measured ? ratio(o.rays.primary[0], f.aabb.rays.primary[0]).c_str() : "–");
+    std::printf(
+        "| %s | %zu | %.0f | %s | %s (%s) | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+        f.name.c_str(), f.triangles, f.loadMs, ratio(o.buildMs, e.buildMs).c_str(),
+        cell(o.structureBytesPerTriangle).c_str(),
+        ratio(o.structureBytesPerTriangle, e.structureBytesPerTriangle).c_str(),
+        ratio(o.bytesPerTriangle, e.bytesPerTriangle).c_str(),
+        ratio(o.rays.primaryPacket[0], e.rays.primary[0]).c_str(),
+        ratio(o.rays.primaryPacket[1], e.rays.primary[1]).c_str(),
+        ratio(o.rays.primary[0], e.rays.primary[0]).c_str(),
+        ratio(o.rays.primaryPacket[0], e.rays.primaryPacket[0]).c_str(),
+        ratio(o.rays.shadow[0], e.rays.shadow[0]).c_str(),
+        ratio(o.rays.shadow[1], e.rays.shadow[1]).c_str(), ratio(o.renderMs, e.renderMs).c_str(),
+        ratio(o.rays.primaryPacket[0], f.embreeHq.rays.primary[0]).c_str(),
+        f.aabb.measured ? ratio(o.rays.primary[0], f.aabb.rays.primary[0]).c_str() : "–");
   }
 }
 

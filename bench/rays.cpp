@@ -8,11 +8,23 @@ namespace meshtrace::bench {
 RaySet primaryRays(const Scene& scene) {
   RaySet set;
   const int w = scene.camera.width(), h = scene.camera.height();
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      set.rays.push_back(scene.camera.primaryRay(x, y));
-      set.tMax.push_back(kInfinity);
+  const auto add = [&](int x, int y) {
+    set.rays.push_back(scene.camera.primaryRay(x, y));
+    set.tMax.push_back(kInfinity);
+  };
+  // In Integrator::quad's order.
+  for (int y = 0; y + 1 < h; y += 2)
+    for (int x = 0; x + 1 < w; x += 2) {
+      add(x, y);
+      add(x + 1, y);
+      add(x, y + 1);
+      add(x + 1, y + 1);
+      ++set.packets;
     }
+  if (w % 2)
+    for (int y = 0; y < h - h % 2; ++y) add(w - 1, y);
+  if (h % 2)
+    for (int x = 0; x < w; ++x) add(x, h - 1);
   return set;
 }
 

@@ -19,13 +19,19 @@ struct RaySet {
   // Shadow rays: the primitive each leaves, which our queries are told (as
   // the integrator tells them); empty for primary rays.
   std::vector<PrimitiveRef> start;
+  // Primary rays: the first 4 * packets rays are the 2x2 pixel quads the
+  // renderer traces together (SceneIntersector::closestHitPacket); the
+  // pixels of an odd last row or column follow one by one.
+  std::size_t packets = 0;
+  // What a packet-tracing engine calls per ray set: packets plus the rest.
+  std::size_t packetCalls() const { return packets + (rays.size() - kPacketSize * packets); }
 
   const PrimitiveRef* startOf(std::size_t i) const {
     return start.empty() ? nullptr : &start[i];
   }
 };
 
-// One ray through every pixel of the scene's camera.
+// One ray through every pixel of the scene's camera, quad by quad.
 RaySet primaryRays(const Scene& scene);
 // From each primary hit whose normal faces the first light, the shadow ray
 // the integrator would cast toward it (found with `intersector`).
