@@ -90,6 +90,26 @@ void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits,
   for (int r = 0; r < kPacketSize; ++r) found[r] = closest[r].found();
 }
 
+std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, const double* tMax,
+                                               const PrimitiveRef* start, std::uint32_t active,
+                                               Counters& counters) const {
+  if (!bvh_) {
+    std::uint32_t blocked = 0;
+    for (int r = 0; r < kPacketSize; ++r)
+      if (active >> r & 1 && occluded(rays[r], tMin, tMax[r], counters, &start[r]))
+        blocked |= 1u << r;
+    return blocked;
+  }
+  const PrimitiveQuery queries[kPacketSize] = {
+      {scene_, rays[0], options_.triangle, tMin, counters, &start[0]},
+      {scene_, rays[1], options_.triangle, tMin, counters, &start[1]},
+      {scene_, rays[2], options_.triangle, tMin, counters, &start[2]},
+      {scene_, rays[3], options_.triangle, tMin, counters, &start[3]}};
+  const PrimitiveQuery* queryOf[kPacketSize] = {&queries[0], &queries[1], &queries[2],
+                                                &queries[3]};
+  return bvh_->occludedPacket(queryOf, tMax, active, counters);
+}
+
 bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
                                 const PrimitiveRef* start) const {
   if (external_) return external_->occluded(ray, tMin, tMax, counters);

@@ -118,6 +118,20 @@ class LazyBlockRay {
   alignas(BlockRay) unsigned char storage_[sizeof(BlockRay)];
 };
 
+// A packet's LazyBlockRays, one per ray.
+class PacketBlockRays {
+ public:
+  PacketBlockRays(const PrimitiveQuery* const* queries, const BlockFrame& frame)
+      : rays_{{queries[0]->ray(), frame, queries[0]->kernel()},
+              {queries[1]->ray(), frame, queries[1]->kernel()},
+              {queries[2]->ray(), frame, queries[2]->kernel()},
+              {queries[3]->ray(), frame, queries[3]->kernel()}} {}
+  const BlockRay& get(int r) { return rays_[r].get(); }
+
+ private:
+  LazyBlockRay rays_[kPacketSize];
+};
+
 }  // namespace
 
 [[gnu::always_inline]] inline SlabRay SceneBvh::slabRay(const PrimitiveQuery& query) const {
@@ -200,18 +214,14 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit
       return;
     }
     const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
-      LazyBlockRay blockRay[kPacketSize] = {
-          {queries[0]->ray(), meshBvh_.frame, queries[0]->kernel()},
-          {queries[1]->ray(), meshBvh_.frame, queries[1]->kernel()},
-          {queries[2]->ray(), meshBvh_.frame, queries[2]->kernel()},
-          {queries[3]->ray(), meshBvh_.frame, queries[3]->kernel()}};
+      PacketBlockRays blockRay(queries, meshBvh_.frame);
       const auto offerBlock = [&](std::uint32_t block, std::uint32_t n,
                                   std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
         for (int r = 0; r < kPacketSize; ++r) {
           if (!(meeting >> r & 1)) continue;
           const PrimitiveQuery& query = *queries[r];
           ClosestHit& best = *closest[r];
-          forEachCandidate(blockRay[r].get(), meshBvh_.blocks[block], n, locate, tMin[r],
+          forEachCandidate(blockRay.get(r), meshBvh_.blocks[block], n, locate, tMin[r],
                            best.t(), counters, [&](const PrimitiveRef& t) {
                              query.offerTriangle(t.object, t.triangle, best);
                              return false;
@@ -275,6 +285,78 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
   const bool blocked = traverseAny(top_, ray, tMin, tMax, visits, objectsBlock);
   counters.nodeVisits += visits;
   return blocked;
+}
+
+std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* const* queries, const double* tMax,
+                                       std::uint32_t active, Counters& counters) const {
+  std::uint32_t found = 0;
+  for (int r = 0; r < kPacketSize; ++r)
+    if (active >> r & 1)
+      for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
+        if (queries[r]->shapeBlocks(ObjectKind::Plane, i, tMax[r])) {
+          found |= 1u << r;
+          break;
+        }
+  active &= ~found;
+  if (!active) return found;
+  const SlabRay rays[kPacketSize] = {slabRay(*queries[0]), slabRay(*queries[1]),
+                                     slabRay(*queries[2]), slabRay(*queries[3])};
+  const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
+  double tMin[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) tMin[r] = queries[r]->tMin();
+  std::uint64_t visits = 0;
+  const auto meshBlocks = [&](std::uint32_t mesh, std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
+    if (mesh != kMeshBvh) {
+      std::uint32_t now = 0;
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
+      for (int r = 0; r < kPacketSize; ++r)
+        if (meeting >> r & 1)
+          for (std::uint32_t t = 0; t < count; ++t)
+            if (queries[r]->triangleBlocks(mesh, t, tMax[r])) {
+              now |= 1u << r;
+              break;
+            }
+      return now;
+    }
+    const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      PacketBlockRays blockRay(queries, meshBvh_.frame);
+      const auto blockBlocks = [&](std::uint32_t block, std::uint32_t n,
+                                   std::uint32_t rays) MESHTRACE_INLINE_LEAF {
+        std::uint32_t now = 0;
+        for (int r = 0; r < kPacketSize; ++r) {
+          if (!(rays >> r & 1)) continue;
+          const PrimitiveQuery& query = *queries[r];
+          const double limit = tMax[r];
+          if (forEachCandidate(blockRay.get(r), meshBvh_.blocks[block], n, locate, tMin[r],
+                               limit, counters, [&](const PrimitiveRef& t) {
+                                 return query.triangleBlocks(t.object, t.triangle, limit);
+                               }))
+            now |= 1u << r;
+        }
+        return now;
+      };
+      return traverseAnyPacket(meshBvh_.tree, slab, tMin, tMax, meeting, visits, blockBlocks);
+    };
+    return withLocator(meshBvh_.triangles, traverse);
+  };
+  const auto objectsBlock = [&](std::uint32_t first, std::uint32_t n,
+                                std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
+    std::uint32_t now = 0;
+    for (std::uint32_t k = first; k < first + n && meeting & ~now; ++k) {
+      const Object& o = objects_[top_.order[k]];
+      if (o.kind == ObjectKind::Mesh) {
+        now |= meshBlocks(o.index, meeting & ~now);
+      } else {
+        for (int r = 0; r < kPacketSize; ++r)
+          if ((meeting & ~now) >> r & 1 && queries[r]->shapeBlocks(o.kind, o.index, tMax[r]))
+            now |= 1u << r;
+      }
+    }
+    return now;
+  };
+  found |= traverseAnyPacket(top_, slab, tMin, tMax, active, visits, objectsBlock);
+  counters.nodeVisits += visits;
+  return found;
 }
 
 #undef MESHTRACE_INLINE_LEAF

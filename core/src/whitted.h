@@ -26,30 +26,43 @@ struct NoObserver {
   void endBounce(const Color&) {}
 };
 
+// The direction l to `light` from sp and its cosine nl with the normal; if
+// nl > 0, also the shadow ray toward the light and the light's distance from
+// that ray's origin (a blocker near the light counts as much as one near the
+// point). Returns nl > 0: a light behind the surface adds nothing, so its
+// shadow ray is left out.
+inline bool shadowRayToward(const Light& light, const SurfacePoint& sp, Vec3& l, double& nl,
+                            Ray& shadow, double& lightDistance) {
+  l = glm::normalize(light.position - sp.point);
+  nl = glm::dot(sp.normal, l);
+  if (!(nl > 0.0)) return false;
+  shadow = {spawnOrigin(sp, l), l};
+  lightDistance = glm::length(light.position - shadow.origin);
+  return true;
+}
+
 // Ambient plus, per light, diffuse and specular unless the light is behind
-// the surface or shadowed.
-template <typename Observer>
+// the surface or shadowed: shadowed(i, shadowRay, lightDistance) tells
+// whether light i's shadow ray is blocked.
+template <typename Observer, typename Shadowed>
 Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
-                   const SurfacePoint& sp, Counters& counters, Observer& observer) {
+                   const SurfacePoint& sp, Counters& counters, Observer& observer,
+                   const Shadowed& shadowed) {
   const Scene& scene = intersector.scene();
   const Material& m = *sp.material;
   Color color = scene.ambience * m.ambient;
   observer.ambient(color);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
-    const Vec3 l = glm::normalize(light.position - sp.point);
-    const double nl = glm::dot(sp.normal, l);
-    // A light behind the surface adds nothing, so its shadow ray is left out.
-    if (!(nl > 0.0)) {
+    Vec3 l;
+    double nl, lightDistance;
+    Ray shadow;
+    if (!shadowRayToward(light, sp, l, nl, shadow, lightDistance)) {
       observer.lightBehind(i, l, nl);
       continue;
     }
-    const Ray shadow{spawnOrigin(sp, l), l};
     ++counters.shadowRays;
-    // The blocker test runs to the light's distance from the shadow ray's own
-    // origin: a blocker near the light counts as much as one near the point.
-    const double lightDistance = glm::length(light.position - shadow.origin);
-    if (intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive)) {
+    if (shadowed(i, shadow, lightDistance)) {
       observer.lightShadowed(i, l, nl, shadow, lightDistance, sp.primitive);
       continue;
     }
@@ -71,18 +84,15 @@ template <typename Observer>
 Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
                    Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr);
 
-// The rest of whittedTrace, given the ray's closest hit (`found` false: none).
-template <typename Observer>
-Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool found, const Hit& hit,
-                   int level, Counters& counters, Observer& observer) {
+// The rest of whittedTrace at the ray's hit, whose surface point is sp;
+// `shadowed` as in whittedLocal.
+template <typename Observer, typename Shadowed>
+Color whittedShadeAt(const SceneIntersector& intersector, const Ray& ray, const Hit& hit,
+                     const SurfacePoint& sp, int level, Counters& counters, Observer& observer,
+                     const Shadowed& shadowed) {
   const Scene& scene = intersector.scene();
-  if (!found) {
-    observer.endBounce(scene.background);
-    return scene.background;
-  }
-  const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
   observer.surface(hit, sp);
-  const Color local = whittedLocal(intersector, -ray.direction, sp, counters, observer);
+  const Color local = whittedLocal(intersector, -ray.direction, sp, counters, observer, shadowed);
   const double mirror = sp.material->mirror;
   // The deepest level keeps its local colour rather than mixing with black.
   const bool reflects = mirror > 0.0 && level < scene.depth;
@@ -100,6 +110,23 @@ Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool fou
       mirror * whittedTrace(intersector, bounce, level + 1, counters, observer, &sp.primitive);
   observer.endBounce(color);
   return color;
+}
+
+// The rest of whittedTrace, given the ray's closest hit (`found` false:
+// none); shadow rays are traced one by one.
+template <typename Observer>
+Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool found, const Hit& hit,
+                   int level, Counters& counters, Observer& observer) {
+  const Scene& scene = intersector.scene();
+  if (!found) {
+    observer.endBounce(scene.background);
+    return scene.background;
+  }
+  const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
+  const auto shadowed = [&](std::size_t, const Ray& shadow, double lightDistance) {
+    return intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive);
+  };
+  return whittedShadeAt(intersector, ray, hit, sp, level, counters, observer, shadowed);
 }
 
 // Colour seen along `ray` at recursion level `level` (0 = primary); `start`

@@ -332,13 +332,14 @@ bool sameOctant(const Vec3& a, const Vec3& b) {
   return true;
 }
 
-// Packets of four rays through SceneIntersector::closestHitPacket against
-// brute force, ray by ray. Most packets are what a camera makes: one origin
+// Packets of four rays through SceneIntersector::closestHitPacket and
+// occludedPacket against brute force, ray by ray. Most packets are what a camera makes: one origin
 // and directions a little apart, or one direction (axis-parallel ones too)
 // from origins a little apart; every fourth is four unrelated rays, which
 // seldom share an octant and go ray by ray.
 struct PacketCheck {
   std::uint64_t rays = 0, hits = 0, differences = 0, sharedOctant = 0;
+  std::uint64_t blocked = 0, anyHitDifferences = 0;
   std::string example;
 };
 PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed) {
@@ -371,6 +372,27 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed) 
     Hit hits[kPacketSize];
     bool found[kPacketSize];
     bvh.closestHitPacket(rays, tMin, hits, found, c);
+    // Any-hit: some rays left out, the others up to a limit near their
+    // hit, and, as shadow rays, spawned off it and told what they leave.
+    double limit[kPacketSize];
+    PrimitiveRef start[kPacketSize];
+    Ray spawned[kPacketSize];
+    const std::uint32_t active = static_cast<std::uint32_t>(rng() % 15) + 1;
+    const bool fromHits = p % 2 == 0;
+    const Vec3 towards = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+    for (int r = 0; r < kPacketSize; ++r) {
+      const double scale[] = {1.25, 1.0, 0.8};
+      limit[r] = (found[r] ? hits[r].t : 2.0) * scale[rng() % 3];
+      spawned[r] = rays[r];
+      if (fromHits && found[r]) {
+        const SurfacePoint sp = surfaceAt(scene, rays[r], hits[r], Precision::Double);
+        spawned[r] = {spawnOrigin(sp, towards), towards};
+        start[r] = sp.primitive;
+      }
+    }
+    const double anyTMin = fromHits ? kSpawnTMin : tMin;
+    const std::uint32_t packetBlocked =
+        bvh.occludedPacket(spawned, anyTMin, limit, start, active, c);
     for (int r = 0; r < kPacketSize; ++r) {
       Hit b;
       const bool fb = brute.closestHit(rays[r], tMin, b, c);
@@ -381,6 +403,15 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed) 
         if (check.example.empty())
           check.example = "packet " + describe(rays[r], hits[r]) + " | brute force " +
                           describe(rays[r], b);
+      }
+      const bool expected = (active >> r & 1) &&
+                            brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
+      check.blocked += expected;
+      if (((packetBlocked >> r & 1) != 0) != expected) {
+        ++check.anyHitDifferences;
+        if (check.example.empty())
+          check.example = "any-hit packet, " + describe(spawned[r], Hit{}) + " to " +
+                          std::to_string(limit[r]);
       }
     }
   }
@@ -399,15 +430,19 @@ TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
   for (int i = 0; i < 3; ++i) {
     const PacketCheck check = comparePackets(scenes[i], 40000, 31 + i);
     std::printf("[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
-                "octant), %llu hits; differences %llu\n",
+                "octant), %llu hits; differences %llu; any-hit: %llu blocked, differences %llu\n",
                 labels[i], static_cast<unsigned long long>(check.rays),
                 static_cast<unsigned long long>(check.sharedOctant),
                 static_cast<unsigned long long>(check.rays / kPacketSize),
                 static_cast<unsigned long long>(check.hits),
-                static_cast<unsigned long long>(check.differences));
+                static_cast<unsigned long long>(check.differences),
+                static_cast<unsigned long long>(check.blocked),
+                static_cast<unsigned long long>(check.anyHitDifferences));
     EXPECT_GT(check.hits, check.rays / 5) << labels[i];
     EXPECT_GT(check.sharedOctant, check.rays / kPacketSize / 2) << labels[i];
+    EXPECT_GT(check.blocked, check.rays / 10) << labels[i];
     EXPECT_EQ(check.differences, 0u) << labels[i] << ": " << check.example;
+    EXPECT_EQ(check.anyHitDifferences, 0u) << labels[i] << ": " << check.example;
   }
 }
 

@@ -123,4 +123,67 @@ template <typename Leaf>
   }
 }
 
+// Calls blocked(first, count, rays) for the leaves whose boxes meet some of
+// the packet's rays that are not yet blocked, at tMin <= t <= tMax; `rays`
+// names them, and the call returns those of them it found blocked. Returns
+// every ray found blocked. The rays need not share an octant (children are
+// taken in slot order, as in traverseAny).
+template <typename Leaf>
+[[gnu::always_inline]] inline std::uint32_t traverseAnyPacket(
+    const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* tMax,
+    std::uint32_t active, std::uint64_t& visits, Leaf&& blocked) {
+  if (bvh.empty() || active == 0) return 0;
+  if (bvh.nodes.empty()) {
+    std::uint32_t meeting = 0;
+    for (int r = 0; r < kPacketSize; ++r)
+      if ((active >> r & 1) &&
+          slab[r]->meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(tMax[r])))
+        meeting |= 1u << r;
+    return meeting ? blocked(0, bvh.rootCount, meeting) : 0;
+  }
+  const BoxRay8 ray[kPacketSize] = {BoxRay8(*slab[0]), BoxRay8(*slab[1]), BoxRay8(*slab[2]),
+                                    BoxRay8(*slab[3])};
+  __m128 tMinV[kPacketSize], tMaxV[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) {
+    tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
+    tMaxV[r] = _mm_set1_ps(bvh8::atLeast(tMax[r]));
+  }
+  struct Entry {
+    std::uint32_t node, rays;
+  };
+  Entry stack[bvh8::kStackSize];
+  int top = 0;
+  stack[top++] = {0, active};
+  const Bvh8Node* nodes = bvh.nodes.data();
+  std::uint64_t visited = 0;
+  std::uint32_t open = active, found = 0;
+  while (top > 0 && open) {
+    const Entry e = stack[--top];
+    const std::uint32_t rays = e.rays & open;
+    if (!rays) continue;
+    const Bvh8Node& node = nodes[e.node];
+    ++visited;
+    alignas(16) float tEnter[kBvhWidth];
+    std::uint32_t perRay = 0;
+    for (int r = 0; r < kPacketSize; ++r)
+      if (rays >> r & 1) perRay |= ray[r].intersect(node, tMinV[r], tMaxV[r], tEnter) << (8 * r);
+    std::uint32_t any = (perRay | perRay >> 8 | perRay >> 16 | perRay >> 24) & 0xffu;
+    for (; any; any &= any - 1) {
+      const int i = __builtin_ctz(any);
+      const std::uint32_t meeting = bvh8::raysMeeting(perRay, i) & open;
+      if (!meeting) continue;
+      if (node.count[i] == 0) {
+        stack[top++] = {node.first[i], meeting};
+      } else {
+        const std::uint32_t now = blocked(node.first[i], node.count[i], meeting);
+        found |= now;
+        open &= ~now;
+        if (!open) break;
+      }
+    }
+  }
+  visits += visited;
+  return found;
+}
+
 }  // namespace meshtrace

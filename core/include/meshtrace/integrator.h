@@ -5,6 +5,8 @@
 
 namespace meshtrace {
 
+inline constexpr std::size_t kMaxPacketLights = 32;
+
 class Integrator {
  public:
   explicit Integrator(const SceneIntersector& intersector) : intersector_(intersector) {}
@@ -16,7 +18,9 @@ class Integrator {
   Color pixel(double x, double y, Counters& counters) const;
   // The colours of the 2x2 pixels (x, y), (x + 1, y), (x, y + 1) and
   // (x + 1, y + 1), in that order: pixel() of each, with their primary rays
-  // traced as one packet.
+  // traced as one packet, and the shadow rays toward each light from their
+  // hits as another (up to kMaxPacketLights lights; with more, shadow rays
+  // go one by one).
   void quad(double x, double y, Color out[4], Counters& counters) const;
   // The same through another camera (the viewer's, once moved).
   Color pixel(const Camera& camera, double x, double y, Counters& counters) const;

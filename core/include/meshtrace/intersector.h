@@ -61,6 +61,13 @@ class SceneIntersector {
   // quad, are traced together. found[r] tells whether ray r hit.
   void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
                         Counters& counters) const;
+  // occluded for the kPacketSize rays named in `active` (bit r: rays[r], up
+  // to tMax[r], leaving start[r]); returns those blocked, exactly as four
+  // calls would. With --accel bvh they are traced together. Every rays[r]
+  // must be a valid ray, active or not.
+  std::uint32_t occludedPacket(const Ray* rays, double tMin, const double* tMax,
+                               const PrimitiveRef* start, std::uint32_t active,
+                               Counters& counters) const;
   // True if anything lies at tMin < t < tMax; `start` as above.
   bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
                 const PrimitiveRef* start = nullptr) const;

@@ -83,6 +83,12 @@ class SceneBvh {
   // True if some primitive is hit at tMin < t < tMax.
   bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
 
+  // occluded for the rays of a packet named in `active` (bit r: queries[r],
+  // limit tMax[r]); returns those blocked. The queries of inactive rays are
+  // still read (give them any ray). The same answers as occluded gives.
+  std::uint32_t occludedPacket(const PrimitiveQuery* const* queries, const double* tMax,
+                               std::uint32_t active, Counters& counters) const;
+
   const SceneBvhStats& stats() const { return stats_; }
   // The triangle BVH, over the meshes large enough for one.
   const MeshBvh& meshBvh() const { return meshBvh_; }
