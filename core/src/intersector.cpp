@@ -83,10 +83,7 @@ void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits,
       {scene_, rays[3], options_.triangle, tMin, counters}};
   ClosestHit closest[kPacketSize] = {ClosestHit(hits[0]), ClosestHit(hits[1]),
                                      ClosestHit(hits[2]), ClosestHit(hits[3])};
-  const PrimitiveQuery* queryOf[kPacketSize] = {&queries[0], &queries[1], &queries[2],
-                                                &queries[3]};
-  ClosestHit* closestOf[kPacketSize] = {&closest[0], &closest[1], &closest[2], &closest[3]};
-  bvh_->closestHitPacket(queryOf, closestOf, counters);
+  bvh_->closestHitPacket(queries, closest, counters);
   for (int r = 0; r < kPacketSize; ++r) found[r] = closest[r].found();
 }
 
@@ -105,9 +102,7 @@ std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, con
       {scene_, rays[1], options_.triangle, tMin, counters, &start[1]},
       {scene_, rays[2], options_.triangle, tMin, counters, &start[2]},
       {scene_, rays[3], options_.triangle, tMin, counters, &start[3]}};
-  const PrimitiveQuery* queryOf[kPacketSize] = {&queries[0], &queries[1], &queries[2],
-                                                &queries[3]};
-  return bvh_->occludedPacket(queryOf, tMax, active, counters);
+  return bvh_->occludedPacket(queries, tMax, active, counters);
 }
 
 bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,

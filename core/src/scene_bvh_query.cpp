@@ -121,11 +121,11 @@ class LazyBlockRay {
 // A packet's LazyBlockRays, one per ray.
 class PacketBlockRays {
  public:
-  PacketBlockRays(const PrimitiveQuery* const* queries, const BlockFrame& frame)
-      : rays_{{queries[0]->ray(), frame, queries[0]->kernel()},
-              {queries[1]->ray(), frame, queries[1]->kernel()},
-              {queries[2]->ray(), frame, queries[2]->kernel()},
-              {queries[3]->ray(), frame, queries[3]->kernel()}} {}
+  PacketBlockRays(const PrimitiveQuery* queries, const BlockFrame& frame)
+      : rays_{{queries[0].ray(), frame, queries[0].kernel()},
+              {queries[1].ray(), frame, queries[1].kernel()},
+              {queries[2].ray(), frame, queries[2].kernel()},
+              {queries[3].ray(), frame, queries[3].kernel()}} {}
   const BlockRay& get(int r) { return rays_[r].get(); }
 
  private:
@@ -147,9 +147,13 @@ class PacketBlockRays {
 
 void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
                           Counters& counters) const {
+  closestHit(query, slabRay(query), closest, counters);
+}
+
+void SceneBvh::closestHit(const PrimitiveQuery& query, const SlabRay& ray, ClosestHit& closest,
+                          Counters& counters) const {
   for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
     query.offerShape(ObjectKind::Plane, i, closest);
-  const SlabRay ray = slabRay(query);
   const double tMin = query.tMin();
   std::uint64_t visits = 0;
   const auto offerMesh = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {
@@ -184,24 +188,24 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, ClosestHit& closest,
   counters.nodeVisits += visits;
 }
 
-void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit* const* closest,
+void SceneBvh::closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest,
                                 Counters& counters) const {
-  const SlabRay rays[kPacketSize] = {slabRay(*queries[0]), slabRay(*queries[1]),
-                                     slabRay(*queries[2]), slabRay(*queries[3])};
+  const SlabRay rays[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
+                                     slabRay(queries[2]), slabRay(queries[3])};
   for (int r = 1; r < kPacketSize; ++r)
     if (rays[r].octant != rays[0].octant) {
-      for (int k = 0; k < kPacketSize; ++k) closestHit(*queries[k], *closest[k], counters);
+      for (int k = 0; k < kPacketSize; ++k) closestHit(queries[k], rays[k], closest[k], counters);
       return;
     }
   for (int r = 0; r < kPacketSize; ++r)
     for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
-      queries[r]->offerShape(ObjectKind::Plane, i, *closest[r]);
+      queries[r].offerShape(ObjectKind::Plane, i, closest[r]);
   const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
   double tMin[kPacketSize];
   const double* tBest[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) {
-    tMin[r] = queries[r]->tMin();
-    tBest[r] = &closest[r]->t();
+    tMin[r] = queries[r].tMin();
+    tBest[r] = &closest[r].t();
   }
   std::uint64_t visits = 0;
   const auto offerMesh = [&](std::uint32_t mesh, std::uint32_t rays) MESHTRACE_INLINE_LEAF {
@@ -210,7 +214,7 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit
       for (int r = 0; r < kPacketSize; ++r)
         if (rays >> r & 1)
           for (std::uint32_t t = 0; t < count; ++t)
-            queries[r]->offerTriangle(mesh, t, *closest[r]);
+            queries[r].offerTriangle(mesh, t, closest[r]);
       return;
     }
     const auto traverse = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
@@ -219,8 +223,8 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit
                                   std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
         for (int r = 0; r < kPacketSize; ++r) {
           if (!(meeting >> r & 1)) continue;
-          const PrimitiveQuery& query = *queries[r];
-          ClosestHit& best = *closest[r];
+          const PrimitiveQuery& query = queries[r];
+          ClosestHit& best = closest[r];
           forEachCandidate(blockRay.get(r), meshBvh_.blocks[block], n, locate, tMin[r],
                            best.t(), counters, [&](const PrimitiveRef& t) {
                              query.offerTriangle(t.object, t.triangle, best);
@@ -240,7 +244,7 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit
         offerMesh(o.index, rays);
       } else {
         for (int r = 0; r < kPacketSize; ++r)
-          if (rays >> r & 1) queries[r]->offerShape(o.kind, o.index, *closest[r]);
+          if (rays >> r & 1) queries[r].offerShape(o.kind, o.index, closest[r]);
       }
     }
   };
@@ -287,23 +291,23 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
   return blocked;
 }
 
-std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* const* queries, const double* tMax,
+std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* queries, const double* tMax,
                                        std::uint32_t active, Counters& counters) const {
   std::uint32_t found = 0;
   for (int r = 0; r < kPacketSize; ++r)
     if (active >> r & 1)
       for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
-        if (queries[r]->shapeBlocks(ObjectKind::Plane, i, tMax[r])) {
+        if (queries[r].shapeBlocks(ObjectKind::Plane, i, tMax[r])) {
           found |= 1u << r;
           break;
         }
   active &= ~found;
   if (!active) return found;
-  const SlabRay rays[kPacketSize] = {slabRay(*queries[0]), slabRay(*queries[1]),
-                                     slabRay(*queries[2]), slabRay(*queries[3])};
+  const SlabRay rays[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
+                                     slabRay(queries[2]), slabRay(queries[3])};
   const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
   double tMin[kPacketSize];
-  for (int r = 0; r < kPacketSize; ++r) tMin[r] = queries[r]->tMin();
+  for (int r = 0; r < kPacketSize; ++r) tMin[r] = queries[r].tMin();
   std::uint64_t visits = 0;
   const auto meshBlocks = [&](std::uint32_t mesh, std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
     if (mesh != kMeshBvh) {
@@ -312,7 +316,7 @@ std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* const* queries, con
       for (int r = 0; r < kPacketSize; ++r)
         if (meeting >> r & 1)
           for (std::uint32_t t = 0; t < count; ++t)
-            if (queries[r]->triangleBlocks(mesh, t, tMax[r])) {
+            if (queries[r].triangleBlocks(mesh, t, tMax[r])) {
               now |= 1u << r;
               break;
             }
@@ -325,7 +329,7 @@ std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* const* queries, con
         std::uint32_t now = 0;
         for (int r = 0; r < kPacketSize; ++r) {
           if (!(rays >> r & 1)) continue;
-          const PrimitiveQuery& query = *queries[r];
+          const PrimitiveQuery& query = queries[r];
           const double limit = tMax[r];
           if (forEachCandidate(blockRay.get(r), meshBvh_.blocks[block], n, locate, tMin[r],
                                limit, counters, [&](const PrimitiveRef& t) {
@@ -348,7 +352,7 @@ std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* const* queries, con
         now |= meshBlocks(o.index, meeting & ~now);
       } else {
         for (int r = 0; r < kPacketSize; ++r)
-          if ((meeting & ~now) >> r & 1 && queries[r]->shapeBlocks(o.kind, o.index, tMax[r]))
+          if ((meeting & ~now) >> r & 1 && queries[r].shapeBlocks(o.kind, o.index, tMax[r]))
             now |= 1u << r;
       }
     }

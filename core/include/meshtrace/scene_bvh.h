@@ -78,7 +78,7 @@ class SceneBvh {
   void closestHit(const PrimitiveQuery& query, ClosestHit& closest, Counters& counters) const;
   // closestHit for four rays at once (kPacketSize), each with its own query
   // and ClosestHit; the same hits as four closestHit calls.
-  void closestHitPacket(const PrimitiveQuery* const* queries, ClosestHit* const* closest,
+  void closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest,
                         Counters& counters) const;
   // True if some primitive is hit at tMin < t < tMax.
   bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
@@ -86,7 +86,7 @@ class SceneBvh {
   // occluded for the rays of a packet named in `active` (bit r: queries[r],
   // limit tMax[r]); returns those blocked. The queries of inactive rays are
   // still read (give them any ray). The same answers as occluded gives.
-  std::uint32_t occludedPacket(const PrimitiveQuery* const* queries, const double* tMax,
+  std::uint32_t occludedPacket(const PrimitiveQuery* queries, const double* tMax,
                                std::uint32_t active, Counters& counters) const;
 
   const SceneBvhStats& stats() const { return stats_; }
@@ -98,6 +98,9 @@ class SceneBvh {
 
  private:
   SlabRay slabRay(const PrimitiveQuery& query) const;
+  // closestHit with the query's slab ray already made.
+  void closestHit(const PrimitiveQuery& query, const SlabRay& ray, ClosestHit& closest,
+                  Counters& counters) const;
 
   struct Object {
     ObjectKind kind;
