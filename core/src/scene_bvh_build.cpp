@@ -1,6 +1,7 @@
 // Building the scene's two-level BVH: object boxes and the triangle BVH.
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "meshtrace/scene_bvh.h"
 
@@ -48,6 +49,14 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
                                std::to_string(options.minMeshTriangles));
   }
   if (!meshBvh_.triangles.empty()) buildMeshBvh(options.mesh, meshBvh_);
+  meshBvh_.prefetch = !meshBvh_.empty() && meshBvh_.bytes() >= options.prefetchBytes;
+  if (!meshBvh_.empty() && !meshBvh_.prefetch) {
+    char why[128];
+    std::snprintf(why, sizeof why,
+                  "BVH children not fetched ahead: the triangle BVH's %.1f MB are under %.1f MB",
+                  meshBvh_.bytes() / 1048576.0, options.prefetchBytes / 1048576.0);
+    stats_.leftOut.push_back(why);
+  }
 
   std::vector<Aabb> boxes;
   const auto add = [&](ObjectKind kind, std::size_t i, const Aabb& box) {

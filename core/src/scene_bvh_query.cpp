@@ -1,9 +1,8 @@
 // Closest-hit and any-hit queries through the scene's two-level BVH.
-#include <xmmintrin.h>
-
 #include <new>
 #include <type_traits>
 
+#include "meshtrace/prefetch.h"
 #include "meshtrace/scene_bvh.h"
 #include "primitive_query.h"
 
@@ -85,12 +84,19 @@ bool forEachCandidate(const BlockRay& ray, const TriangleBlock4& block, std::uin
                       Exact&& exact) {
   const auto& mesh = locate.of(block);
   for (std::uint32_t k = 0; k < n; ++k)
-    _mm_prefetch(reinterpret_cast<const char*>(mesh.row(block.id[k])), _MM_HINT_T0);
+    prefetchLine(mesh.row(block.id[k]));
   int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
   counters.triangleTests += n - laneCount(mask);
   for (; mask; mask &= mask - 1)
     if (exact(mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(mask))]))) return true;
   return false;
+}
+
+// What the triangle BVH's traversals ask for ahead: a leaf's data is its
+// block.
+auto childPrefetch(const MeshBvh& bvh) {
+  const auto block = [blocks = bvh.blocks.data()](std::uint32_t b) { prefetchObject(blocks[b]); };
+  return bvh8::PrefetchChildren<decltype(block)>(bvh.prefetch, block);
 }
 
 // The triangle BVH's BlockRay, made when the ray first reaches one of its
@@ -171,7 +177,8 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, const SlabRay& ray, Close
                            return false;
                          });
       };
-      traverseClosest(meshBvh_.tree, ray, tMin, closest.t(), visits, offerBlock);
+      traverseClosest(meshBvh_.tree, ray, tMin, closest.t(), visits, offerBlock,
+                      childPrefetch(meshBvh_));
     };
     withLocator(meshBvh_.triangles, traverse);
   };
@@ -232,7 +239,8 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* queries, ClosestHit* close
                            });
         }
       };
-      traverseClosestPacket(meshBvh_.tree, slab, tMin, tBest, rays, visits, offerBlock);
+      traverseClosestPacket(meshBvh_.tree, slab, tMin, tBest, rays, visits, offerBlock,
+                            childPrefetch(meshBvh_));
     };
     withLocator(meshBvh_.triangles, traverse);
   };
@@ -273,7 +281,8 @@ bool SceneBvh::occluded(const PrimitiveQuery& query, double tMax, Counters& coun
                                   return query.triangleBlocks(t.object, t.triangle, tMax);
                                 });
       };
-      return traverseAny(meshBvh_.tree, ray, tMin, tMax, visits, blockBlocks);
+      return traverseAny(meshBvh_.tree, ray, tMin, tMax, visits, blockBlocks,
+                         childPrefetch(meshBvh_));
     };
     return withLocator(meshBvh_.triangles, traverse);
   };
@@ -339,7 +348,8 @@ std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* queries, const doub
         }
         return now;
       };
-      return traverseAnyPacket(meshBvh_.tree, slab, tMin, tMax, meeting, visits, blockBlocks);
+      return traverseAnyPacket(meshBvh_.tree, slab, tMin, tMax, meeting, visits, blockBlocks,
+                               childPrefetch(meshBvh_));
     };
     return withLocator(meshBvh_.triangles, traverse);
   };

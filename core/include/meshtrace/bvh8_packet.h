@@ -44,11 +44,11 @@ inline std::uint32_t raysMeeting(std::uint32_t perRay, int child) {
 // Calls leaf(first, count, rays) for the leaves whose boxes meet some of the
 // packet's rays; `rays` names those that do (within their own [tMin, tBest]).
 // All rays must share slab[0]'s octant. tBest[r] is read again after every
-// leaf call, as in traverseClosest.
-template <typename Leaf>
+// leaf call, and `prefetch` is used, as in traverseClosest.
+template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 [[gnu::always_inline]] inline void traverseClosestPacket(
     const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* const* tBest,
-    std::uint32_t active, std::uint64_t& visits, Leaf&& leaf) {
+    std::uint32_t active, std::uint64_t& visits, Leaf&& leaf, const Prefetch& prefetch = {}) {
   if (bvh.empty() || active == 0) return;
   if (bvh.nodes.empty()) {
     std::uint32_t meeting = 0;
@@ -89,6 +89,7 @@ template <typename Leaf>
         nearHigh = _mm_min_ps(nearHigh, _mm_load_ps(tEnter[r] + 4));
       }
       const std::uint32_t any = (perRay | perRay >> 8 | perRay >> 16 | perRay >> 24) & 0xffu;
+      prefetch(nodes, node, any);
       if (any) {
         alignas(16) float nearest[kBvhWidth];
         _mm_store_ps(nearest, nearLow);
@@ -135,11 +136,11 @@ template <typename Leaf>
 // the packet's rays that are not yet blocked, at tMin <= t <= tMax; `rays`
 // names them, and the call returns those of them it found blocked. Returns
 // every ray found blocked. The rays need not share an octant (children are
-// taken in slot order, as in traverseAny).
-template <typename Leaf>
+// taken in slot order, as in traverseAny; `prefetch` as there).
+template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 [[gnu::always_inline]] inline std::uint32_t traverseAnyPacket(
     const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* tMax,
-    std::uint32_t active, std::uint64_t& visits, Leaf&& blocked) {
+    std::uint32_t active, std::uint64_t& visits, Leaf&& blocked, const Prefetch& prefetch = {}) {
   if (bvh.empty() || active == 0) return 0;
   if (bvh.nodes.empty()) {
     std::uint32_t meeting = 0;
@@ -176,6 +177,7 @@ template <typename Leaf>
     for (int r = 0; r < kPacketSize; ++r)
       if (rays >> r & 1) perRay |= ray[r].intersect(node, tMinV[r], tMaxV[r], tEnter) << (8 * r);
     std::uint32_t any = (perRay | perRay >> 8 | perRay >> 16 | perRay >> 24) & 0xffu;
+    prefetch(nodes, node, any);
     for (; any; any &= any - 1) {
       const int i = __builtin_ctz(any);
       const std::uint32_t meeting = bvh8::raysMeeting(perRay, i) & open;
