@@ -24,5 +24,3 @@ inline void prefetchObject(const T& object) {
 }
 
 }  // namespace meshtrace
-
-
