@@ -1,6 +1,8 @@
 #include "embree_intersector.h"
 
 #include <chrono>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -67,22 +69,17 @@ RTCRayHit EmbreeIntersector::prepare(const Ray& ray, double tMin, double tMax) {
   return rh;
 }
 
+// RTCRay is twelve 4-byte fields and RTCRay4 the same twelve, in the same
+// order, as arrays of four (rtcore_ray.h): packing is a transposition.
+static_assert(sizeof(RTCRay) == 12 * 4 && offsetof(RTCRay, flags) == 11 * 4);
+static_assert(sizeof(RTCRay4) == 12 * 16 && offsetof(RTCRay4, flags) == 11 * 16);
 RTCRayHit4 EmbreeIntersector::pack(const RTCRayHit* rays) {
   RTCRayHit4 p{};
+  auto* to = reinterpret_cast<unsigned char*>(&p.ray);
   for (int r = 0; r < 4; ++r) {
-    const RTCRay& ray = rays[r].ray;
-    p.ray.org_x[r] = ray.org_x;
-    p.ray.org_y[r] = ray.org_y;
-    p.ray.org_z[r] = ray.org_z;
-    p.ray.tnear[r] = ray.tnear;
-    p.ray.dir_x[r] = ray.dir_x;
-    p.ray.dir_y[r] = ray.dir_y;
-    p.ray.dir_z[r] = ray.dir_z;
-    p.ray.time[r] = ray.time;
-    p.ray.tfar[r] = ray.tfar;
-    p.ray.mask[r] = ray.mask;
-    p.ray.id[r] = ray.id;
-    p.ray.flags[r] = ray.flags;
+    const auto* from = reinterpret_cast<const unsigned char*>(&rays[r].ray);
+    for (int field = 0; field < 12; ++field)
+      std::memcpy(to + 16 * field + 4 * r, from + 4 * field, 4);
     p.hit.geomID[r] = RTC_INVALID_GEOMETRY_ID;
     p.hit.instID[0][r] = RTC_INVALID_GEOMETRY_ID;
   }

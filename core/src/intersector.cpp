@@ -90,6 +90,7 @@ void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits,
 std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, const double* tMax,
                                                const PrimitiveRef* start, std::uint32_t active,
                                                Counters& counters) const {
+  if (active == 0) return 0;  // a quad with no hit, or a light behind all four
   if (!bvh_) {
     std::uint32_t blocked = 0;
     for (int r = 0; r < kPacketSize; ++r)
