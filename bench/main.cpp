@@ -14,6 +14,7 @@
 
 #include "crossover.h"
 #include "embree_intersector.h"
+#include "full_run.h"
 #include "mesh_scenes.h"
 #include "meshtrace/image.h"
 #include "meshtrace/render.h"
@@ -79,41 +80,11 @@ std::size_t meshBytes(const Scene& scene) {
   return b;
 }
 
-// Load, build, render and write, as a `raytrace SCENE OUT.png` run does.
-template <typename MakeIntersector>
-double fullRunMs(const std::filesystem::path& file, const std::filesystem::path& out, int threads,
-                 const MakeIntersector& make) {
-  const auto start = Clock::now();
-  const Scene scene = loadScene(file);
-  const auto intersector = make(scene);
-  const Image image = render(intersector->intersector, threads);
-  writeImage(quantize(image), out);
-  return secondsSince(start) * 1e3;
-}
-
 TraceOptions withAccel(AccelMethod m) {
   TraceOptions o;
   o.accel = m;
   return o;
 }
-
-struct Ours {
-  SceneIntersector intersector;
-  Ours(const Scene& s, AccelMethod m) : intersector(s, withAccel(m)) {}
-};
-struct WithEmbree {
-  EmbreeIntersector embree;
-  SceneIntersector intersector;
-  // Embree's hits are float: shading spawns rays as for a float kernel.
-  explicit WithEmbree(const Scene& s)
-      : embree(s, RTC_BUILD_QUALITY_MEDIUM),
-        intersector(s, singlePrecisionHits(), embree) {}
-  static TraceOptions singlePrecisionHits() {
-    TraceOptions o;
-    o.triangle.precision = Precision::Single;
-    return o;
-  }
-};
 
 // One ray of each set through our intersector, as the timers call it.
 auto oursPrimary(const SceneIntersector& is, const RaySet& primary) {
@@ -304,12 +275,8 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
   // a single run each moved the ratio by up to a tenth between benches.
   std::vector<double> oursRuns, embreeRuns;
   for (int k = 0; k < kFullRuns; ++k) {
-    oursRuns.push_back(fullRunMs(file, outDir / (f.name + ".png"), threads, [](const Scene& s) {
-      return std::make_unique<Ours>(s, AccelMethod::Bvh);
-    }));
-    embreeRuns.push_back(
-        fullRunMs(file, outDir / (f.name + "-embree.png"), threads,
-                  [](const Scene& s) { return std::make_unique<WithEmbree>(s); }));
+    oursRuns.push_back(fullRunMs("bvh", file, outDir / (f.name + ".png"), threads));
+    embreeRuns.push_back(fullRunMs("embree", file, outDir / (f.name + "-embree.png"), threads));
   }
   f.ours.renderMs = median(oursRuns);
   f.embree.renderMs = median(embreeRuns);
@@ -326,8 +293,8 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
       const double estimate = primary.rays.size() / (e.rays.primary[1] * 1e6) +
                               shadow.rays.size() / (e.rays.shadow[1] * 1e6);
       if (estimate < kSlowRenderLimit)
-        e.renderMs = fullRunMs(file, outDir / (f.name + "-" + toString(m) + ".png"), threads,
-                               [m](const Scene& s) { return std::make_unique<Ours>(s, m); });
+        e.renderMs = fullRunMs(toString(m), file,
+                               outDir / (f.name + "-" + toString(m) + ".png"), threads);
     }
   }
   return f;
@@ -434,9 +401,19 @@ int main(int argc, char** argv) {
   cli.add_option("--make-knot", makeKnot, "Write a generated torus knot OFF, and exit");
   cli.add_option("--triangles", knotTriangles, "Triangles of --make-knot")->capture_default_str();
   cli.add_flag("--crossover", crossover, "Measure the mesh size at which a BVH pays, and exit");
+  // The child process of a whole-run measurement (full_run.h).
+  std::string fullRun, image;
+  cli.add_option("--full-run", fullRun)->group("");
+  cli.add_option("--image", image)->group("");
   CLI11_PARSE(cli, argc, argv);
 
   try {
+    if (!fullRun.empty()) {
+      if (scenes.size() != 1 || image.empty())
+        throw std::runtime_error("--full-run takes one scene and --image");
+      std::printf("%.3f\n", fullRunHereMs(fullRun, scenes[0], image, threads));
+      return 0;
+    }
     if (!makeKnot.empty()) {
       writeKnot(makeKnot, knotTriangles);
       return 0;
