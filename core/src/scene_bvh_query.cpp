@@ -197,17 +197,16 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, const SlabRay& ray, Close
 
 void SceneBvh::closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest,
                                 Counters& counters) const {
-  const SlabRay rays[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
+  const SlabRay slab[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
                                      slabRay(queries[2]), slabRay(queries[3])};
   for (int r = 1; r < kPacketSize; ++r)
-    if (rays[r].octant != rays[0].octant) {
-      for (int k = 0; k < kPacketSize; ++k) closestHit(queries[k], rays[k], closest[k], counters);
+    if (slab[r].octant != slab[0].octant) {
+      for (int k = 0; k < kPacketSize; ++k) closestHit(queries[k], slab[k], closest[k], counters);
       return;
     }
   for (int r = 0; r < kPacketSize; ++r)
     for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
       queries[r].offerShape(ObjectKind::Plane, i, closest[r]);
-  const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
   double tMin[kPacketSize];
   const double* tBest[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) {
@@ -312,9 +311,8 @@ std::uint32_t SceneBvh::occludedPacket(const PrimitiveQuery* queries, const doub
         }
   active &= ~found;
   if (!active) return found;
-  const SlabRay rays[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
+  const SlabRay slab[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
                                      slabRay(queries[2]), slabRay(queries[3])};
-  const SlabRay* slab[kPacketSize] = {&rays[0], &rays[1], &rays[2], &rays[3]};
   double tMin[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) tMin[r] = queries[r].tMin();
   std::uint64_t visits = 0;

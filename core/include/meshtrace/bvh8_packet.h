@@ -47,20 +47,20 @@ inline std::uint32_t raysMeeting(std::uint32_t perRay, int child) {
 // leaf call, and `prefetch` is used, as in traverseClosest.
 template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 [[gnu::always_inline]] inline void traverseClosestPacket(
-    const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* const* tBest,
+    const Bvh8& bvh, const SlabRay* slab, const double* tMin, const double* const* tBest,
     std::uint32_t active, std::uint64_t& visits, Leaf&& leaf, const Prefetch& prefetch = {}) {
   if (bvh.empty() || active == 0) return;
   if (bvh.nodes.empty()) {
     std::uint32_t meeting = 0;
     for (int r = 0; r < kPacketSize; ++r)
       if ((active >> r & 1) &&
-          slab[r]->meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(*tBest[r])))
+          slab[r].meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(*tBest[r])))
         meeting |= 1u << r;
     if (meeting) leaf(0, bvh.rootCount, meeting);
     return;
   }
-  const BoxRay8 ray[kPacketSize] = {BoxRay8(*slab[0]), BoxRay8(*slab[1]), BoxRay8(*slab[2]),
-                                    BoxRay8(*slab[3])};
+  const BoxRay8 ray[kPacketSize] = {BoxRay8(slab[0]), BoxRay8(slab[1]), BoxRay8(slab[2]),
+                                    BoxRay8(slab[3])};
   __m128 tMinV[kPacketSize];
   float tMax[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) {
@@ -139,19 +139,19 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 // taken in slot order, as in traverseAny; `prefetch` as there).
 template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 [[gnu::always_inline]] inline std::uint32_t traverseAnyPacket(
-    const Bvh8& bvh, const SlabRay* const* slab, const double* tMin, const double* tMax,
+    const Bvh8& bvh, const SlabRay* slab, const double* tMin, const double* tMax,
     std::uint32_t active, std::uint64_t& visits, Leaf&& blocked, const Prefetch& prefetch = {}) {
   if (bvh.empty() || active == 0) return 0;
   if (bvh.nodes.empty()) {
     std::uint32_t meeting = 0;
     for (int r = 0; r < kPacketSize; ++r)
       if ((active >> r & 1) &&
-          slab[r]->meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(tMax[r])))
+          slab[r].meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(tMax[r])))
         meeting |= 1u << r;
     return meeting ? blocked(0, bvh.rootCount, meeting) : 0;
   }
-  const BoxRay8 ray[kPacketSize] = {BoxRay8(*slab[0]), BoxRay8(*slab[1]), BoxRay8(*slab[2]),
-                                    BoxRay8(*slab[3])};
+  const BoxRay8 ray[kPacketSize] = {BoxRay8(slab[0]), BoxRay8(slab[1]), BoxRay8(slab[2]),
+                                    BoxRay8(slab[3])};
   __m128 tMinV[kPacketSize], tMaxV[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) {
     tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
