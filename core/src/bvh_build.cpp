@@ -232,7 +232,7 @@ class Builder {
   // from many boundaries, yet pays a sweep over all of them. On knot1m's
   // binary build (1 thread) one bin per two primitives took 241-253 ms, one
   // per eight 215-232, this 216-228; primary rays were as fast with each
-  // (80.5-81.5 ns a ray on knot1m, 45.5-46.6 on armadillo, within noise).
+  // (80.4-81.5 ns a ray on knot1m, 45.5-46.6 on armadillo, within noise).
   int binsFor(std::uint32_t n) const {
     return std::min(bins_, static_cast<int>(4 + std::min<std::uint32_t>(n / 20, kMaxBins)));
   }
@@ -247,8 +247,8 @@ class Builder {
           // one primitive at a time, each update's address came late (at the
           // end of the bin arithmetic), and the next primitive's loads from
           // the bins, issued before it, were often found to read the same
-          // bin and redone: neighbouring primitives share bins. Three times
-          // slower than this per primitive on knot1m (19-21 ns against 6-7).
+          // bin and redone: neighbouring primitives share bins. About three
+          // times slower per primitive on knot1m (16-22 ns against 5.5-7.5).
           constexpr std::uint32_t kBatch = 32;
           alignas(16) std::int32_t k[kBatch][4];
           for (std::uint32_t first = b; first < e; first += kBatch) {
