@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <tuple>
@@ -13,6 +14,9 @@ namespace meshtrace {
 const char* toString(Shading shading) { return shading == Shading::Flat ? "FLAT" : "PHONG"; }
 
 namespace {
+
+// Elements a task takes in the passes over a mesh's triangles or vertices.
+constexpr std::size_t kGrain = std::size_t{1} << 14;
 
 // Whether each triangle contributes to the vertex normals: not degenerate
 // (no direction to give), and the first in file order among the triangles
@@ -89,21 +93,40 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
       for (int k = 0; k < 3; ++k) normals[t[k]] += w[k] * triangleNormals[i];
     }
   }
-  for (Vec3& n : normals) {
-    const double len = glm::length(n);
-    n = len > 0.0 ? n / len : Vec3(0.0);
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t v = r.begin(); v < r.end(); ++v) {
+                        const double len = glm::length(normals[v]);
+                        normals[v] = len > 0.0 ? normals[v] / len : Vec3(0.0);
+                      }
+                    });
   return normals;
 }
 
 Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material)
     : file_(std::move(file)), data_(std::move(data)), shading_(Shading::Flat), material_(material) {
-  for (const Vec3& v : data_.vertices) bounds_.extend(v);
-  triangleNormals_.reserve(data_.triangles.size());
-  for (const TriangleIndices& t : data_.triangles) {
-    triangleNormals_.push_back(
-        triangleNormal(data_.vertices[t[0]], data_.vertices[t[1]], data_.vertices[t[2]]));
-  }
+  // Both passes in parallel: on knot1m (1M triangles, 2 threads) they took
+  // 17-20 ms one after the other, 13-14 ms so; most of the rest is resize's
+  // zero fill of the normals.
+  const std::vector<Vec3>& v = data_.vertices;
+  bounds_ = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, v.size(), kGrain), Aabb{},
+      [&](const tbb::blocked_range<std::size_t>& r, Aabb box) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) box.extend(v[i]);
+        return box;
+      },
+      [](Aabb a, const Aabb& b) {
+        a.extend(b);
+        return a;
+      });
+  triangleNormals_.resize(data_.triangles.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data_.triangles.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        const TriangleIndices& t = data_.triangles[i];
+                        triangleNormals_[i] = triangleNormal(v[t[0]], v[t[1]], v[t[2]]);
+                      }
+                    });
   setShading(shading);
 }
 

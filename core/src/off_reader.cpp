@@ -216,9 +216,9 @@ class OffParser {
 }  // namespace
 
 MeshData readOff(const std::filesystem::path& file) {
-  const std::string data = text::readFile(file, kMaxOffBytes);
-  text::requireText(data, file);
-  return OffParser(data, file).parse();
+  const text::FileBytes data = text::readFile(file, kMaxOffBytes);
+  text::requireText(data.text(), file);
+  return OffParser(data.text(), file).parse();
 }
 
 }  // namespace meshtrace

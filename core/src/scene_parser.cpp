@@ -219,10 +219,10 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  const std::string data = text::readFile(file, kMaxSceneBytes);
-  if (data.find_first_not_of(" \t\r\n") == std::string::npos)
+  const text::FileBytes data = text::readFile(file, kMaxSceneBytes);
+  if (data.text().find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw InputError::inFile(file, "empty scene file");
-  return parseScene(data, file);
+  return parseScene(data.text(), file);
 }
 
 }  // namespace meshtrace

@@ -1,5 +1,8 @@
 #include "text.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <charconv>
 #include <fstream>
 #include <system_error>
@@ -12,7 +15,7 @@ namespace {
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 }  // namespace
 
-std::string readFile(const std::filesystem::path& file, std::uintmax_t maxBytes) {
+FileBytes readFile(const std::filesystem::path& file, std::uintmax_t maxBytes) {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
   if (ec || !std::filesystem::exists(status)) throw InputError::inFile(file, "file not found");
@@ -26,7 +29,7 @@ std::string readFile(const std::filesystem::path& file, std::uintmax_t maxBytes)
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError::inFile(file, "cannot open file for reading");
-  std::string data(static_cast<std::size_t>(size), '\0');
+  FileBytes data(static_cast<std::size_t>(size));
   in.read(data.data(), static_cast<std::streamsize>(size));
   if (static_cast<std::uintmax_t>(in.gcount()) != size)
     throw InputError::inFile(file, "could not read the whole file");
@@ -34,7 +37,19 @@ std::string readFile(const std::filesystem::path& file, std::uintmax_t maxBytes)
 }
 
 void requireText(std::string_view text, const std::filesystem::path& file) {
-  const std::size_t nul = text.find('\0');
+  // The first NUL byte: each block's first, the least of those.
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  const std::size_t nul = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, (text.size() + kBlock - 1) / kBlock),
+      std::string_view::npos,
+      [&](const tbb::blocked_range<std::size_t>& r, std::size_t first) {
+        for (std::size_t b = r.begin(); b < r.end(); ++b) {
+          const std::size_t found = text.substr(b * kBlock, kBlock).find('\0');
+          if (found != std::string_view::npos) first = std::min(first, b * kBlock + found);
+        }
+        return first;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
   if (nul != std::string_view::npos) {
     throw InputError::inFile(file, "binary data (a NUL byte at offset " + std::to_string(nul) +
                                        "): not a text file");

@@ -283,6 +283,19 @@ TEST(OffReader, RejectsBinaryGarbageWithNulBytes) {
   expectMentions(offErrorOf(garbage), {"mesh.off", "binary"});
 }
 
+// The text is searched for NUL bytes in parallel blocks of 1 MB: the first
+// in the file is the one reported, wherever the blocks fall.
+TEST(OffReader, NamesTheFirstNulByteOfALargeFile) {
+  LargeOff off = largeOff(60000, 120000);
+  ASSERT_GT(off.text.size(), std::size_t{4} << 20) << "several blocks";
+  const std::size_t first = (std::size_t{3} << 20) + 5;
+  off.text[off.text.size() - 10] = '\0';
+  off.text[first + 1] = '\0';
+  off.text[first] = '\0';
+  expectMentions(offErrorOf(off.text),
+                 {"mesh.off", "binary", "offset " + std::to_string(first) + ")"});
+}
+
 TEST(OffReader, RejectsBinaryGarbageWithoutNulBytes) {
   expectMentions(offErrorOf("\x89PNG\r\n\x1a\n\xff\xfe\xfd\x80\x81"), {"mesh.off:1", "header"});
 }
