@@ -16,8 +16,7 @@
 #include "embree_intersector.h"
 #include "full_run.h"
 #include "mesh_scenes.h"
-#include "meshtrace/image.h"
-#include "meshtrace/render.h"
+#include "meshtrace/intersector.h"
 #include "meshtrace/scene_parser.h"
 #include "rays.h"
 
