@@ -447,8 +447,8 @@ TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
   }
 }
 
-// Fetching children ahead is a hint to the memory and nothing else: switched
-// on for a small mesh (by default only triangle BVHs of kPrefetchBvhBytes or
+// Fetching children ahead (and a packet's candidate vertices) is a hint to
+// the memory and nothing else: switched on for a small mesh (by default only triangle BVHs of kPrefetchBvhBytes or
 // more use it), every query still finds what brute force finds; switched off,
 // the stats say so.
 TEST(BvhPrefetch, FetchingChildrenAheadChangesNoAnswer) {
