@@ -105,7 +105,7 @@ bool forEachLane(const TriangleBlock4& block, int lanes, const Mesh& mesh, Exact
 // several lanes wait for them together, not in turn. The packet's closest
 // hits on large trees filter the block for all their rays first, then ask
 // for the vertices of every lane passed, then test: knot1m's hitting quads,
-// 1 thread, six alternating runs, 548-564 -> 523-536 ns a ray (the rays
+// 1 thread, six alternating runs, 548-564 -> 523-548 ns a ray (the rays
 // of a quad mostly meet their hits in different triangles). Shadow packets
 // were slower with it (316-340 -> 345-378 ns: nearly all their candidates
 // are lanes the exact test rejects), so they test at once.
