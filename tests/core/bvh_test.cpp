@@ -448,9 +448,9 @@ TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
 }
 
 // Fetching children ahead (and a packet's candidate vertices) is a hint to
-// the memory and nothing else: switched on for a small mesh (by default only triangle BVHs of kPrefetchBvhBytes or
-// more use it), every query still finds what brute force finds; switched off,
-// the stats say so.
+// the memory and nothing else: switched on for a small mesh (by default only
+// triangle BVHs of kPrefetchBvhBytes or more use it), every query still
+// finds what brute force finds; switched off, the stats say so.
 TEST(BvhPrefetch, FetchingChildrenAheadChangesNoAnswer) {
   const Scene knot =
       meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
