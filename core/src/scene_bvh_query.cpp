@@ -175,8 +175,12 @@ class PacketBlockRays {
 }  // namespace
 
 [[gnu::always_inline]] inline SlabRay SceneBvh::slabRay(const PrimitiveQuery& query) const {
-  const bool single = query.kernel().precision == Precision::Single;
-  return SlabRay(query.ray(), slabPadding(single, query.ray().origin, sceneScale_));
+  // One call per precision, so that each folds its padding's constants into
+  // SlabRay's scale factors rather than working them out for every ray.
+  const Ray& ray = query.ray();
+  if (query.kernel().precision == Precision::Single)
+    return SlabRay(ray, slabPadding(true, ray.origin, sceneScale_));
+  return SlabRay(ray, slabPadding(false, ray.origin, sceneScale_));
 }
 
 // The leaf work of both levels is forced inline (GCC and Clang take the
