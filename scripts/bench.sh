@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Benchmark of --accel bvh against Embree 3 (see BENCHMARKS.md). Installs
-# libembree-dev if missing (it is not part of the normal build), fetches
-# Debian's libcgal-demo package and takes five meshes from it, generates a
-# 1M-triangle mesh with our own code, builds the bench target into
-# build-bench/ and prints the tables. Everything fetched or generated goes to
-# bench-data/, which git ignores.
+# what is missing of the project's packages and of libembree-dev (which
+# only the bench needs), fetches Debian's libcgal-demo package and takes
+# five meshes from it, generates a 1M-triangle mesh with our own code,
+# builds the bench target into build-bench/ and prints the tables.
+# Everything fetched or generated goes to bench-data/, which git ignores.
 # Usage: scripts/bench.sh [--fast] [--threads N] [--crossover]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,6 +12,7 @@ data=bench-data
 meshes=(bunny00 fandisk ChineseDragon-10kv armadillo refined_elephant)
 seed=../shared/seed/scenes
 
+scripts/setup.sh --packages-only
 scripts/install-packages.sh libembree-dev
 
 mkdir -p "$data/cgal"

@@ -2,6 +2,7 @@
 # Installs the Debian packages meshtrace needs (only those missing) and
 # builds the project into build/. Safe to run again: both steps are
 # incremental. Usage: scripts/setup.sh [extra cmake arguments]
+#                    scripts/setup.sh --packages-only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,6 +20,7 @@ packages=(
 )
 
 scripts/install-packages.sh "${packages[@]}"
+[ "${1:-}" != --packages-only ] || exit 0
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
 cmake --build build

@@ -53,9 +53,9 @@ struct Bvh8 {
   }
 };
 
-// Each node takes its binary node's two children, then repeatedly replaces
-// an interior child by its own two children while there is room for eight:
-// first the widest child whose whole subtree still fits, else the widest.
+// Keeps the binary tree's leaves and makes 8-wide nodes of the binary nodes
+// whose boxes' areas sum to the least (bvh8_build.cpp), each node taking the
+// leaves and 8-wide nodes below it as its up to eight children.
 // Throws std::length_error for a leaf larger than kMaxBvh8Leaf. Takes the
 // binary tree by value: its primitive order moves into the result.
 Bvh8 collapseToBvh8(Bvh binary);
