@@ -200,7 +200,8 @@ class Collapser {
     return n;
   }
 
-  // Appends the children that binary node `b` becomes in at most `slots`.
+  // Appends the children that binary node `b` becomes when it may take up
+  // to `slots` slots.
   void take(std::uint32_t b, int slots, std::uint32_t* children, int& n) const {
     const int k = in_.nodes[b].isLeaf() ? 0 : plan_.split(b, slots);
     if (k == 0) {
