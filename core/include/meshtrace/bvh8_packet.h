@@ -12,6 +12,7 @@
 // Primary rays of 2x2 quads, 1 thread: 1.17x (knot1m, where a hitting ray
 // waits on memory) to 1.38x (armadillo) the speed of ray by ray; shadow
 // rays from the quads' hits, 1.09-1.27x (BENCHMARKS.md).
+#include <emmintrin.h>
 #include <xmmintrin.h>
 
 #include <cstdint>
@@ -25,18 +26,32 @@ inline constexpr int kPacketSize = 4;
 
 namespace bvh8 {
 
+// A postponed child. Its rays are kept as the node test's result shifted
+// right by the child's slot (bit 8r: ray r meets it) and gathered only when
+// it is popped: a push writes all eight slots, met or not, and gathering
+// the rays of each there took 370 instructions a hitting primary quad on
+// knot1m.
 struct PacketEntry {
   std::uint32_t first, count;  // as Entry
   float tEnter;                // the nearest entry among the packet's rays
-  std::uint32_t rays;          // the rays that meet the box (bit r: ray r)
+  std::uint32_t meets;         // bit 8r: ray r meets the box
 };
 
-// Bit r of the result: bit `child` of byte r of `perRay` (ray r's child mask).
-// The multiply gathers bits 0, 8, 16 and 24 into bits 28-31; no two of
-// the partial products land on the same bit, so nothing carries.
-inline std::uint32_t raysMeeting(std::uint32_t perRay, int child) {
-  const std::uint64_t bits = (perRay >> child) & 0x01010101u;
+// The rays of a PacketEntry's `meets` (bit r: ray r). The multiply gathers
+// bits 0, 8, 16 and 24 into bits 28-31; no two of the partial products land
+// on the same bit, so nothing carries.
+inline std::uint32_t raysOf(std::uint32_t meets) {
+  const std::uint64_t bits = meets & 0x01010101u;
   return static_cast<std::uint32_t>((bits * 0x10204080u) >> 28) & 0xfu;
+}
+
+// atLeast (bvh8_traverse.h) of the four rays' best distances, lane r for
+// ray r: the same double product and rounding to float, two rays at a time.
+inline __m128 atLeast4(const double* const* t) {
+  const __m128d up = _mm_set1_pd(1.0 + 0x1p-23);
+  const __m128 low = _mm_cvtpd_ps(_mm_mul_pd(_mm_set_pd(*t[1], *t[0]), up));
+  const __m128 high = _mm_cvtpd_ps(_mm_mul_pd(_mm_set_pd(*t[3], *t[2]), up));
+  return _mm_movelh_ps(low, high);
 }
 
 }  // namespace bvh8
@@ -62,17 +77,18 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
   const BoxRay8 ray[kPacketSize] = {BoxRay8(slab[0]), BoxRay8(slab[1]), BoxRay8(slab[2]),
                                     BoxRay8(slab[3])};
   __m128 tMinV[kPacketSize];
-  float tMax[kPacketSize];
-  for (int r = 0; r < kPacketSize; ++r) {
-    tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
-    tMax[r] = bvh8::atLeast(*tBest[r]);
-  }
+  for (int r = 0; r < kPacketSize; ++r) tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
+  // Lane r: ray r's upper bound, refreshed after every leaf.
+  __m128 tMaxV = bvh8::atLeast4(tBest);
+  alignas(16) float tMax[kPacketSize];
+  _mm_store_ps(tMax, tMaxV);
   const int octant = ray[0].octant();
   bvh8::PacketEntry stack[bvh8::kStackSize];
   int top = 0;
   const Bvh8Node* nodes = bvh.nodes.data();
   std::uint64_t visited = 0;
-  bvh8::PacketEntry next{0, 0, 0.0f, active};
+  bvh8::PacketEntry next{0, 0, 0.0f, 0};
+  std::uint32_t rays = active;  // next's rays
   for (;;) {
     if (next.count == 0) {
       const Bvh8Node& node = nodes[next.first];
@@ -81,7 +97,7 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
       std::uint32_t perRay = 0;
       __m128 nearLow = _mm_set1_ps(std::numeric_limits<float>::infinity()), nearHigh = nearLow;
       for (int r = 0; r < kPacketSize; ++r) {
-        if (!(next.rays >> r & 1)) continue;
+        if (!(rays >> r & 1)) continue;
         perRay |= ray[r].intersect(node, tMinV[r], _mm_set1_ps(tMax[r]), tEnter[r]) << (8 * r);
         // Rays that miss a child lower its entry too: still a bound below
         // the rays that meet it, which is all the culling below needs.
@@ -96,24 +112,25 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
         _mm_store_ps(nearest + 4, nearHigh);
         if ((any & (any - 1)) == 0) {
           const int i = __builtin_ctz(any);
-          next = {node.first[i], node.count[i], nearest[i], bvh8::raysMeeting(perRay, i)};
+          next = {node.first[i], node.count[i], nearest[i], perRay >> i};
         } else {
           // Farthest first, so that the nearest is popped next.
           const std::uint32_t order = node.childOrder(octant);
 #pragma GCC unroll 8
           for (int k = kBvhWidth - 1; k >= 0; --k) {
             const unsigned slot = order >> (3 * k) & 7;
-            stack[top] = {node.first[slot], node.count[slot], nearest[slot],
-                          bvh8::raysMeeting(perRay, static_cast<int>(slot))};
+            stack[top] = {node.first[slot], node.count[slot], nearest[slot], perRay >> slot};
             top += static_cast<int>(any >> slot & 1);
           }
           next = stack[--top];
         }
+        rays = bvh8::raysOf(next.meets);
         continue;
       }
     } else {
-      leaf(next.first, next.count, next.rays);
-      for (int r = 0; r < kPacketSize; ++r) tMax[r] = bvh8::atLeast(*tBest[r]);
+      leaf(next.first, next.count, rays);
+      tMaxV = bvh8::atLeast4(tBest);
+      _mm_store_ps(tMax, tMaxV);
     }
     // Resume with the nearest postponed child that may still hold a hit for
     // one of its rays.
@@ -123,11 +140,10 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
         return;
       }
       next = stack[--top];
-      std::uint32_t still = 0;
-      for (int r = 0; r < kPacketSize; ++r)
-        still |= static_cast<std::uint32_t>(next.tEnter <= tMax[r]) << r;
-      next.rays &= still;
-      if (next.rays) break;
+      const auto still = static_cast<std::uint32_t>(
+          _mm_movemask_ps(_mm_cmple_ps(_mm_set1_ps(next.tEnter), tMaxV)));
+      rays = bvh8::raysOf(next.meets) & still;
+      if (rays) break;
     }
   }
 }
@@ -180,7 +196,7 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
     prefetch(nodes, node, any);
     for (; any; any &= any - 1) {
       const int i = __builtin_ctz(any);
-      const std::uint32_t meeting = bvh8::raysMeeting(perRay, i) & open;
+      const std::uint32_t meeting = bvh8::raysOf(perRay >> i) & open;
       if (!meeting) continue;
       if (node.count[i] == 0) {
         stack[top++] = {node.first[i], meeting};
