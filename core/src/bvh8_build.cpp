@@ -129,6 +129,7 @@ class CollapsePlan {
     const bool rightLeaf = binary_.nodes[node.first + 1].isLeaf();
     float splitCost[kBvhWidth + 1];
     std::uint8_t splitLeft[kBvhWidth + 1];
+#pragma GCC unroll 8
     for (int j = 2; j <= kBvhWidth; ++j) {
       splitCost[j] = left[0] + right[j - 2];
       splitLeft[j] = 1;
@@ -138,12 +139,14 @@ class CollapsePlan {
         splitLeft[j] = static_cast<std::uint8_t>(j - 1);
         continue;
       }
+      // Selects, not branches: which share wins depends on each subtree's
+      // areas, and mispredicted it cost about a fifth of the collapse.
+#pragma GCC unroll 8
       for (int k = 2; k < j; ++k) {
         const float c = left[k - 1] + right[j - k - 1];
-        if (c < splitCost[j]) {
-          splitCost[j] = c;
-          splitLeft[j] = static_cast<std::uint8_t>(k);
-        }
+        const bool better = c < splitCost[j];
+        splitLeft[j] = better ? static_cast<std::uint8_t>(k) : splitLeft[j];
+        splitCost[j] = better ? c : splitCost[j];
       }
     }
     Costs best;
