@@ -68,17 +68,6 @@ void setChildOrders(Bvh8Node& node) {
   }
 }
 
-// Leaves under each binary node. Children come after their parent in the
-// binary tree.
-std::vector<std::uint32_t> leafCounts(const Bvh& binary) {
-  std::vector<std::uint32_t> leaves(binary.nodes.size(), 1);
-  for (std::size_t i = binary.nodes.size(); i-- > 0;) {
-    const BvhNode& node = binary.nodes[i];
-    if (!node.isLeaf()) leaves[i] = leaves[node.first] + leaves[node.first + 1];
-  }
-  return leaves;
-}
-
 // Which binary nodes become 8-wide nodes. Every leaf of the binary tree
 // ends up as the child of one 8-wide node whatever the choice, so what the
 // choice changes is the set of 8-wide nodes, and by the surface area
@@ -262,7 +251,6 @@ Bvh8 collapseToBvh8(Bvh binary) {
   // The root's node, then the subtree of each of its interior children,
   // collapsed in parallel and appended in slot order: the depth-first order
   // of one serial pass, so the tree is the same whatever the threads do.
-  const std::vector<std::uint32_t> leaves = leafCounts(binary);
   const CollapsePlan plan(binary);
   const Collapser top(binary, plan);
   std::uint32_t children[kBvhWidth];
@@ -271,10 +259,8 @@ Bvh8 collapseToBvh8(Bvh binary) {
   for (int i = 0; i < n; ++i)
     if (!binary.nodes[children[i]].isLeaf()) interior.push_back(i);
   std::vector<Collapser> parts(interior.size(), top);
-  tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t k) {
-    parts[k].nodes.reserve(leaves[children[interior[k]]] / 3 + 1);
-    parts[k].node(children[interior[k]], 2);
-  });
+  tbb::parallel_for(std::size_t(0), parts.size(),
+                    [&](std::size_t k) { parts[k].node(children[interior[k]], 2); });
   std::vector<std::uint32_t> base(parts.size());
   std::size_t total = 1;
   out.depth = 1;
