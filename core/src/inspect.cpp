@@ -77,16 +77,15 @@ class Recorder {
   void lightBehind(std::size_t light, const Vec3& l, double nl) {
     current().lights.push_back(lightRecord(light, l, nl));
   }
-  void lightShadowed(std::size_t light, const Vec3& l, double nl, const Ray& shadow,
-                     double lightDistance, const PrimitiveRef& start) {
+  void lightShadowed(std::size_t light, const Vec3& l, double nl, const SurfacePoint& sp) {
     LightRecord rec = lightRecord(light, l, nl);
     rec.shadowed = true;
     // The nearest blocker, found with a closest-hit query limited to the
     // light; its counters are not the render's, so they are kept apart.
     Counters scratch;
     Hit blocker;
-    blocker.t = lightDistance;
-    if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch, &start)) {
+    const Ray shadow = shadowRayToward(intersector_.scene().lights[light], sp, l, blocker.t);
+    if (intersector_.closestHit(shadow, kSpawnTMin, blocker, scratch, &sp.primitive)) {
       rec.blocker = blocker.ref;
       rec.blockerT = blocker.t;
     }

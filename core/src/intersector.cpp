@@ -71,20 +71,23 @@ bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counter
 }
 
 void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
-                                        Counters& counters) const {
+                                        Counters& counters, const PrimitiveRef* start,
+                                        std::uint32_t active) const {
+  const auto leaving = [start](int r) { return start ? &start[r] : nullptr; };
   if (!bvh_) {
-    for (int r = 0; r < kPacketSize; ++r) found[r] = closestHit(rays[r], tMin, hits[r], counters);
+    for (int r = 0; r < kPacketSize; ++r)
+      found[r] = (active >> r & 1) && closestHit(rays[r], tMin, hits[r], counters, leaving(r));
     return;
   }
   const PrimitiveQuery queries[kPacketSize] = {
-      {scene_, rays[0], options_.triangle, tMin, counters},
-      {scene_, rays[1], options_.triangle, tMin, counters},
-      {scene_, rays[2], options_.triangle, tMin, counters},
-      {scene_, rays[3], options_.triangle, tMin, counters}};
+      {scene_, rays[0], options_.triangle, tMin, counters, leaving(0)},
+      {scene_, rays[1], options_.triangle, tMin, counters, leaving(1)},
+      {scene_, rays[2], options_.triangle, tMin, counters, leaving(2)},
+      {scene_, rays[3], options_.triangle, tMin, counters, leaving(3)}};
   ClosestHit closest[kPacketSize] = {ClosestHit(hits[0]), ClosestHit(hits[1]),
                                      ClosestHit(hits[2]), ClosestHit(hits[3])};
-  bvh_->closestHitPacket(queries, closest, counters);
-  for (int r = 0; r < kPacketSize; ++r) found[r] = closest[r].found();
+  bvh_->closestHitPacket(queries, closest, active, counters);
+  for (int r = 0; r < kPacketSize; ++r) found[r] = (active >> r & 1) && closest[r].found();
 }
 
 std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, const double* tMax,

@@ -234,17 +234,21 @@ void SceneBvh::closestHit(const PrimitiveQuery& query, const SlabRay& ray, Close
 }
 
 void SceneBvh::closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest,
-                                Counters& counters) const {
+                                std::uint32_t active, Counters& counters) const {
+  if (active == 0) return;
   const SlabRay slab[kPacketSize] = {slabRay(queries[0]), slabRay(queries[1]),
                                      slabRay(queries[2]), slabRay(queries[3])};
-  for (int r = 1; r < kPacketSize; ++r)
-    if (slab[r].octant != slab[0].octant) {
-      for (int k = 0; k < kPacketSize; ++k) closestHit(queries[k], slab[k], closest[k], counters);
+  const int lead = __builtin_ctz(active);
+  for (int r = 0; r < kPacketSize; ++r)
+    if (active >> r & 1 && slab[r].octant != slab[lead].octant) {
+      for (int k = 0; k < kPacketSize; ++k)
+        if (active >> k & 1) closestHit(queries[k], slab[k], closest[k], counters);
       return;
     }
   for (int r = 0; r < kPacketSize; ++r)
-    for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
-      queries[r].offerShape(ObjectKind::Plane, i, closest[r]);
+    if (active >> r & 1)
+      for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
+        queries[r].offerShape(ObjectKind::Plane, i, closest[r]);
   double tMin[kPacketSize];
   const double* tBest[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) {
@@ -302,7 +306,7 @@ void SceneBvh::closestHitPacket(const PrimitiveQuery* queries, ClosestHit* close
       }
     }
   };
-  traverseClosestPacket(top_, slab, tMin, tBest, 0xfu, visits, offerObjects);
+  traverseClosestPacket(top_, slab, tMin, tBest, active, visits, offerObjects);
   counters.nodeVisits += visits;
 }
 

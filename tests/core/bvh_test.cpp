@@ -333,13 +333,16 @@ bool sameOctant(const Vec3& a, const Vec3& b) {
 }
 
 // Packets of four rays through SceneIntersector::closestHitPacket and
-// occludedPacket against brute force, ray by ray. Most packets are what a camera makes: one origin
+// occludedPacket against brute force, ray by ray: the packet as given, then
+// some of its rays (any-hit and closest-hit), spawned off their hits in one
+// direction as shadow and reflection rays are. Most packets are what a camera makes: one origin
 // and directions a little apart, or one direction (axis-parallel ones too)
 // from origins a little apart; every fourth is four unrelated rays, which
 // seldom share an octant and go ray by ray.
 struct PacketCheck {
   std::uint64_t rays = 0, hits = 0, differences = 0, sharedOctant = 0;
   std::uint64_t blocked = 0, anyHitDifferences = 0;
+  std::uint64_t spawnedHits = 0;  // of the spawned rays' closest hits
   std::string example;
 };
 PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
@@ -394,6 +397,10 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
     const double anyTMin = fromHits ? kSpawnTMin : tMin;
     const std::uint32_t packetBlocked =
         bvh.occludedPacket(spawned, anyTMin, limit, start, active, c);
+    // Closest hits of the same rays, as mirror reflections are traced.
+    Hit spawnedHits[kPacketSize];
+    bool spawnedFound[kPacketSize];
+    bvh.closestHitPacket(spawned, anyTMin, spawnedHits, spawnedFound, c, start, active);
     for (int r = 0; r < kPacketSize; ++r) {
       Hit b;
       const bool fb = brute.closestHit(rays[r], tMin, b, c);
@@ -404,6 +411,16 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
         if (check.example.empty())
           check.example = "packet " + describe(rays[r], hits[r]) + " | brute force " +
                           describe(rays[r], b);
+      }
+      Hit spawnedBrute;
+      const bool spawnedExpected =
+          (active >> r & 1) && brute.closestHit(spawned[r], anyTMin, spawnedBrute, c, &start[r]);
+      check.spawnedHits += spawnedExpected;
+      if (!sameHit(spawnedFound[r], spawnedHits[r], spawnedExpected, spawnedBrute)) {
+        ++check.differences;
+        if (check.example.empty())
+          check.example = "spawned packet " + describe(spawned[r], spawnedHits[r]) +
+                          " | brute force " + describe(spawned[r], spawnedBrute);
       }
       const bool expected = (active >> r & 1) &&
                             brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
@@ -430,16 +447,20 @@ TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
   const char* labels[] = {"knot", "twin meshes", "objects"};
   for (int i = 0; i < 3; ++i) {
     const PacketCheck check = comparePackets(scenes[i], 40000, 31 + i);
-    std::printf("[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
-                "octant), %llu hits; differences %llu; any-hit: %llu blocked, differences %llu\n",
-                labels[i], static_cast<unsigned long long>(check.rays),
-                static_cast<unsigned long long>(check.sharedOctant),
-                static_cast<unsigned long long>(check.rays / kPacketSize),
-                static_cast<unsigned long long>(check.hits),
-                static_cast<unsigned long long>(check.differences),
-                static_cast<unsigned long long>(check.blocked),
-                static_cast<unsigned long long>(check.anyHitDifferences));
+    std::printf(
+        "[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
+        "octant), %llu hits, %llu spawned hits; differences %llu; any-hit: %llu "
+        "blocked, differences %llu\n",
+        labels[i], static_cast<unsigned long long>(check.rays),
+        static_cast<unsigned long long>(check.sharedOctant),
+        static_cast<unsigned long long>(check.rays / kPacketSize),
+        static_cast<unsigned long long>(check.hits),
+        static_cast<unsigned long long>(check.spawnedHits),
+        static_cast<unsigned long long>(check.differences),
+        static_cast<unsigned long long>(check.blocked),
+        static_cast<unsigned long long>(check.anyHitDifferences));
     EXPECT_GT(check.hits, check.rays / 5) << labels[i];
+    EXPECT_GT(check.spawnedHits, check.rays / 20) << labels[i];
     EXPECT_GT(check.sharedOctant, check.rays / kPacketSize / 2) << labels[i];
     EXPECT_GT(check.blocked, check.rays / 10) << labels[i];
     EXPECT_EQ(check.differences, 0u) << labels[i] << ": " << check.example;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "../support/files.h"
 #include "../support/paths.h"
 #include "../support/scene_snippets.h"
@@ -55,19 +57,37 @@ TEST(Render, CountsTheSameWorkForOneAndTwoThreads) {
   EXPECT_EQ(c1.describe(), c2.describe());
 }
 
-// The image traces its primary rays in 2x2 packets (odd edges pixel by
-// pixel); each pixel must still be the colour brute force gives it alone.
-TEST(Render, GivesEachPixelTheColourItHasAlone) {
-  const Scene scene = busyScene();
-  const Image image = render(scene, {});
+// The image traces its rays in 2x2 packets (odd edges pixel by pixel):
+// primary rays, each light's shadow rays and each level's mirror reflections.
+// Each pixel must still be the colour brute force gives it alone, and the
+// image must cast the rays that pixel by pixel would.
+void expectEachPixelAsAlone(const Scene& scene) {
+  Counters packets;
+  const Image image = render(scene, {}, &packets);
   const SceneIntersector brute(scene, {AccelMethod::None});
   const Integrator integrator(brute);
-  Counters c;
+  Counters alone;
   int differing = 0;
   for (int row = 0; row < image.height; ++row)
     for (int x = 0; x < image.width; ++x)
-      differing += integrator.pixel(x, image.height - 1 - row, c) != image.at(x, row);
+      differing += integrator.pixel(x, image.height - 1 - row, alone) != image.at(x, row);
   EXPECT_EQ(differing, 0);
+  EXPECT_EQ(packets.primaryRays, alone.primaryRays);
+  EXPECT_EQ(packets.shadowRays, alone.shadowRays);
+  EXPECT_EQ(packets.reflectionRays, alone.reflectionRays);
+  EXPECT_GT(alone.reflectionRays, alone.primaryRays / 4);  // the mirrors take part
+}
+
+TEST(Render, GivesEachPixelTheColourItHasAlone) { expectEachPixelAsAlone(busyScene()); }
+
+// Beyond kMaxPacketLights lights, a packet's shading goes on ray by ray.
+TEST(Render, GivesEachPixelItsColourAloneWithMoreLightsThanAPacketTakes) {
+  Scene scene = busyScene();
+  while (scene.lights.size() <= kMaxPacketLights) {
+    const double k = static_cast<double>(scene.lights.size());
+    scene.lights.push_back({{std::sin(k) * 5.0, 4.0, std::cos(k) * 5.0}, Color(0.02)});
+  }
+  expectEachPixelAsAlone(scene);
 }
 
 TEST(Render, StoresTheBottomRowLast) {

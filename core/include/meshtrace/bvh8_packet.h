@@ -58,7 +58,7 @@ inline __m128 atLeast4(const double* const* t) {
 
 // Calls leaf(first, count, rays) for the leaves whose boxes meet some of the
 // packet's rays; `rays` names those that do (within their own [tMin, tBest]).
-// All rays must share slab[0]'s octant. tBest[r] is read again after every
+// The active rays must share an octant. tBest[r] is read again after every
 // leaf call, and `prefetch` is used, as in traverseClosest.
 template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
 [[gnu::always_inline]] inline void traverseClosestPacket(
@@ -82,7 +82,7 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
   __m128 tMaxV = bvh8::atLeast4(tBest);
   alignas(16) float tMax[kPacketSize];
   _mm_store_ps(tMax, tMaxV);
-  const int octant = ray[0].octant();
+  const int octant = ray[__builtin_ctz(active)].octant();
   bvh8::PacketEntry stack[bvh8::kStackSize];
   int top = 0;
   const Bvh8Node* nodes = bvh.nodes.data();

@@ -18,9 +18,9 @@ class Integrator {
   Color pixel(double x, double y, Counters& counters) const;
   // The colours of the 2x2 pixels (x, y), (x + 1, y), (x, y + 1) and
   // (x + 1, y + 1), in that order: pixel() of each, with their primary rays
-  // traced as one packet, and the shadow rays toward each light from their
-  // hits as another (up to kMaxPacketLights lights; with more, shadow rays
-  // go one by one).
+  // traced as one packet, the shadow rays toward each light from their hits
+  // as another, and their mirror reflections as the next level's packet (up
+  // to kMaxPacketLights lights; with more, each ray's shading goes on alone).
   void quad(double x, double y, Color out[4], Counters& counters) const;
   // The same through another camera (the viewer's, once moved).
   Color pixel(const Camera& camera, double x, double y, Counters& counters) const;
@@ -28,6 +28,12 @@ class Integrator {
   const SceneIntersector& intersector() const { return intersector_; }
 
  private:
+  // What quad() does at recursion level `level`, for the rays named in
+  // `active` (bit r: rays[r], leaving start[r] when `start` is given), into
+  // out[r]; the other slots are left alone.
+  void shadePacket(const Ray* rays, std::uint32_t active, int level, const PrimitiveRef* start,
+                   Color* out, Counters& counters) const;
+
   const SceneIntersector& intersector_;
 };
 

@@ -55,12 +55,15 @@ class SceneIntersector {
   // (SurfacePoint::primitive): a triangle there is not tested (spawn.h).
   bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
                   const PrimitiveRef* start = nullptr) const;
-  // closestHit for kPacketSize rays (scene_bvh.h) with no start primitive,
-  // answered exactly as four calls would be; with --accel bvh, rays that
-  // share an octant of directions, such as the primary rays of a 2x2 pixel
-  // quad, are traced together. found[r] tells whether ray r hit.
-  void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
-                        Counters& counters) const;
+  // closestHit for the kPacketSize rays (scene_bvh.h) named in `active`
+  // (bit r: rays[r], leaving start[r] when `start` is given), answered
+  // exactly as separate calls would be; with --accel bvh, rays that share an
+  // octant of directions, such as the primary rays of a 2x2 pixel quad or
+  // their mirror reflections off a plane, are traced together. found[r]
+  // tells whether ray r hit (false for inactive rays). Every rays[r] must be
+  // a valid ray, active or not: give inactive slots a copy of an active ray.
+  void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found, Counters& counters,
+                        const PrimitiveRef* start = nullptr, std::uint32_t active = 0xfu) const;
   // occluded for the kPacketSize rays named in `active` (bit r: rays[r], up
   // to tMax[r], leaving start[r]); returns those blocked, exactly as four
   // calls would. With --accel bvh they are traced together. Every rays[r]

@@ -88,9 +88,11 @@ class SceneBvh {
 
   // Offers every primitive the ray may hit to `closest` (see primitive_query.h).
   void closestHit(const PrimitiveQuery& query, ClosestHit& closest, Counters& counters) const;
-  // closestHit for four rays at once (kPacketSize), each with its own query
-  // and ClosestHit; the same hits as four closestHit calls.
-  void closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest,
+  // closestHit for the rays of a packet named in `active` (bit r:
+  // queries[r], offering to closest[r]); the same hits as a closestHit call
+  // for each. The queries of inactive rays are still read (give them any
+  // ray, best one of an active ray's octant).
+  void closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest, std::uint32_t active,
                         Counters& counters) const;
   // True if some primitive is hit at tMin < t < tMax.
   bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
