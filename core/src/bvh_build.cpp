@@ -304,9 +304,9 @@ class Builder {
   // boundary moves by the answer (a branch-free Lomuto partition). On a
   // real mesh the side is a coin toss for the branch predictor: Hoare's
   // scan from both ends, a branch per primitive, made the whole binary
-  // build (1 thread, best of eleven) take 14.7 ms instead of 9.0 on
-  // armadillo, 22.2 instead of 16.2 on refined_elephant, 14.0 instead of
-  // 9.8 on toon_faces and 248 instead of 233 on knot1m. The sides hold the
+  // build (1 thread, best of eleven) take 14.7 ms instead of 8.9 on
+  // armadillo, 22.0 instead of 16.2 on refined_elephant, 14.0 instead of
+  // 9.7 on toon_faces and 246 instead of 231 on knot1m. The sides hold the
   // same primitives either way, so every later split and every leaf's set
   // of primitives is the same; only the order within a leaf differs.
   // Folding the centroids into the swap loop with masks was slower
