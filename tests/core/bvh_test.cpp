@@ -335,10 +335,10 @@ bool sameOctant(const Vec3& a, const Vec3& b) {
 // Packets of four rays through SceneIntersector::closestHitPacket and
 // occludedPacket against brute force, ray by ray: the packet as given, then
 // some of its rays (any-hit and closest-hit), spawned off their hits in one
-// direction as shadow and reflection rays are. Most packets are what a camera makes: one origin
-// and directions a little apart, or one direction (axis-parallel ones too)
-// from origins a little apart; every fourth is four unrelated rays, which
-// seldom share an octant and go ray by ray.
+// direction as shadow and reflection rays are. Most packets are what a
+// camera makes: one origin and directions a little apart, or one direction
+// (axis-parallel ones too) from origins a little apart; every fourth is four
+// unrelated rays, which seldom share an octant and go ray by ray.
 struct PacketCheck {
   std::uint64_t rays = 0, hits = 0, differences = 0, sharedOctant = 0;
   std::uint64_t blocked = 0, anyHitDifferences = 0;
@@ -401,27 +401,27 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
     Hit spawnedHits[kPacketSize];
     bool spawnedFound[kPacketSize];
     bvh.closestHitPacket(spawned, anyTMin, spawnedHits, spawnedFound, c, start, active);
+    // Counts a closest hit that differs from brute force's.
+    const auto compareClosest = [&](const char* label, const Ray& ray, bool packetFound,
+                                    const Hit& packetHit, bool bruteFound, const Hit& bruteHit) {
+      if (sameHit(packetFound, packetHit, bruteFound, bruteHit)) return;
+      ++check.differences;
+      if (check.example.empty())
+        check.example = std::string(label) + " " + describe(ray, packetHit) + " | brute force " +
+                        describe(ray, bruteHit);
+    };
     for (int r = 0; r < kPacketSize; ++r) {
       Hit b;
       const bool fb = brute.closestHit(rays[r], tMin, b, c);
       ++check.rays;
       check.hits += fb;
-      if (!sameHit(found[r], hits[r], fb, b)) {
-        ++check.differences;
-        if (check.example.empty())
-          check.example = "packet " + describe(rays[r], hits[r]) + " | brute force " +
-                          describe(rays[r], b);
-      }
+      compareClosest("packet", rays[r], found[r], hits[r], fb, b);
       Hit spawnedBrute;
       const bool spawnedExpected =
           (active >> r & 1) && brute.closestHit(spawned[r], anyTMin, spawnedBrute, c, &start[r]);
       check.spawnedHits += spawnedExpected;
-      if (!sameHit(spawnedFound[r], spawnedHits[r], spawnedExpected, spawnedBrute)) {
-        ++check.differences;
-        if (check.example.empty())
-          check.example = "spawned packet " + describe(spawned[r], spawnedHits[r]) +
-                          " | brute force " + describe(spawned[r], spawnedBrute);
-      }
+      compareClosest("spawned packet", spawned[r], spawnedFound[r], spawnedHits[r], spawnedExpected,
+                     spawnedBrute);
       const bool expected = (active >> r & 1) &&
                             brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
       check.blocked += expected;
