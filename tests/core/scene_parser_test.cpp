@@ -228,6 +228,53 @@ TEST(SceneParser, RejectsABadMeshNamingTheSceneLineAndTheMeshLine) {
                  {"s.sce:2", "broken.off:6", "face 0", "out of range"});
 }
 
+// The meshes load side by side; the scene lists them in file order.
+TEST(SceneParser, KeepsTheMeshesInFileOrder) {
+  const auto dir = test::scratchDir();
+  const std::string fan = "OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 1 0\n";
+  std::string lines = kCameraLine;
+  for (int corners = 3; corners <= 5; ++corners) {
+    const std::string name = "fan" + std::to_string(corners) + ".off";
+    std::string face = std::to_string(corners);
+    for (int k = 0; k < corners; ++k) face += " " + std::to_string(k);
+    test::writeFile(dir / name, fan + face + "\n");
+    lines += "mesh " + name + " FLAT " + kMaterial + "\n";
+  }
+  const Scene scene = loadScene(test::writeFile(dir / "s.sce", lines));
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(scene.meshes[i].triangles().size(), i + 1);
+    EXPECT_EQ(scene.meshes[i].file().filename(), "fan" + std::to_string(i + 3) + ".off");
+  }
+}
+
+// Of several bad meshes, the error names the first in the scene file,
+// whichever finished loading first.
+TEST(SceneParser, ReportsTheFirstBadMeshOfTheScene) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "tri.off", test::kTriangleOff);
+  test::writeFile(dir / "early.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  test::writeFile(dir / "late.off", "OFF\n3 1 0\n0 0 0\n1 0 x\n0 1 0\n3 0 1 2\n");
+  const auto scene = test::writeFile(dir / "s.sce", kCameraLine + "mesh tri.off FLAT " + kMaterial +
+                                                        "\nmesh early.off FLAT " + kMaterial +
+                                                        "\nmesh late.off FLAT " + kMaterial + "\n");
+  for (int run = 0; run < 10; ++run)
+    expectMentions(test::inputErrorOf([&] { loadScene(scene); }),
+                   {"s.sce:3", "early.off:6", "out of range"});
+}
+
+// The whole scene file is checked before any mesh is read: a mistake after a
+// mesh line is reported without waiting for the mesh.
+TEST(SceneParser, ReportsAMistakeInTheSceneBeforeReadingAnyMesh) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const auto scene = test::writeFile(
+      dir / "s.sce", kCameraLine + "mesh broken.off FLAT " + kMaterial + "\nsphere 0 0 0\n");
+  const std::string message = test::inputErrorOf([&] { loadScene(scene); });
+  expectMentions(message, {"s.sce:3", "sphere"});
+  EXPECT_EQ(message.find("broken.off"), std::string::npos) << message;
+}
+
 TEST(SceneParser, RejectsAMeshPathThatIsADirectory) {
   const auto dir = test::scratchDir();
   std::filesystem::create_directory(dir / "meshdir.off");

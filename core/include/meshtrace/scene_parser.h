@@ -8,7 +8,9 @@
 namespace meshtrace {
 
 // Throws InputError naming the file and line on bad input. Mesh paths are
-// resolved against the scene file's folder.
+// resolved against the scene file's folder; the meshes are read, side by
+// side, once the whole scene file has parsed, and of several bad meshes the
+// first in the file is the one reported.
 Scene loadScene(const std::filesystem::path& file);
 
 // Parses scene text that claims to come from `file` (used for messages and
