@@ -40,8 +40,13 @@ constexpr double kSlowRenderLimit = 30.0;
 // between benches (refined_elephant 0.97x, then 1.07x); in fifteen
 // alternating runs of each, its single runs spread over 62-90 ms (ours)
 // and 67-112 ms (Embree-backed). With eleven, toon_faces still moved from
-// 0.94x to 1.08x between two benches of nearly the same code.
-constexpr int kFullRuns = 21;
+// 0.94x to 1.08x between two benches of nearly the same code. The runs of
+// a scene are spread over rounds through all scenes, seconds apart: run
+// back to back, mask's twenty-one pairs once came out at 1.07x (paired
+// 1.07x) in a slow spell of the machine, where three benches of mask
+// alone gave 0.90-0.93x.
+constexpr int kFullRunRounds = 3;
+constexpr int kFullRunsPerRound = 7;
 
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -278,19 +283,6 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
   measureSideBySide(ours, embree, embreeHq, primary, shadow, threads, f);
   f.ours.measured = f.embree.measured = f.embreeHq.measured = true;
 
-  // Whole runs alternate between the engines and each takes its median:
-  // a single run each moved the ratio by up to a tenth between benches.
-  std::vector<double> oursRuns, embreeRuns;
-  for (int k = 0; k < kFullRuns; ++k) {
-    oursRuns.push_back(fullRunMs("bvh", file, outDir / (f.name + ".png"), threads));
-    embreeRuns.push_back(fullRunMs("embree", file, outDir / (f.name + "-embree.png"), threads));
-  }
-  f.ours.renderMs = median(oursRuns);
-  f.embree.renderMs = median(embreeRuns);
-  std::vector<double> pairRatios;
-  for (int k = 0; k < kFullRuns; ++k) pairRatios.push_back(oursRuns[k] / embreeRuns[k]);
-  f.fullRunPairedRatio = median(pairRatios);
-
   if (slow) {
     for (AccelMethod m : {AccelMethod::BoundingBox, AccelMethod::None}) {
       EngineFigures& e = m == AccelMethod::None ? f.none : f.aabb;
@@ -308,6 +300,31 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
     }
   }
   return f;
+}
+
+// The whole runs of ours and the Embree-backed renderer, alternating, in
+// rounds through all the scenes (see kFullRunRounds): each engine's median,
+// and the median of the ratios of each of our runs to the Embree-backed run
+// just after it (the two share the machine's spell).
+void measureFullRuns(const std::vector<std::filesystem::path>& files,
+                     const std::filesystem::path& outDir, int threads,
+                     std::vector<SceneFigures>& all) {
+  std::vector<std::vector<double>> ours(all.size()), embree(all.size());
+  for (int round = 0; round < kFullRunRounds; ++round)
+    for (std::size_t i = 0; i < all.size(); ++i)
+      for (int k = 0; k < kFullRunsPerRound; ++k) {
+        ours[i].push_back(fullRunMs("bvh", files[i], outDir / (all[i].name + ".png"), threads));
+        embree[i].push_back(
+            fullRunMs("embree", files[i], outDir / (all[i].name + "-embree.png"), threads));
+      }
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    std::vector<double> pairRatios;
+    for (std::size_t k = 0; k < ours[i].size(); ++k)
+      pairRatios.push_back(ours[i][k] / embree[i][k]);
+    all[i].ours.renderMs = median(ours[i]);
+    all[i].embree.renderMs = median(embree[i]);
+    all[i].fullRunPairedRatio = median(pairRatios);
+  }
 }
 
 std::string cell(std::optional<double> v, const char* format = "%.1f") {
@@ -442,6 +459,7 @@ int main(int argc, char** argv) {
     }
     std::filesystem::create_directories(outDir);
     std::vector<SceneFigures> all;
+    std::vector<std::filesystem::path> measured;
     for (const std::string& s : scenes) {
       const Scene probe = loadScene(s);
       if (!EmbreeIntersector::supports(probe)) {
@@ -449,10 +467,13 @@ int main(int argc, char** argv) {
                     s.c_str());
         continue;
       }
+      std::fprintf(stderr, "bench: measuring %s\n", s.c_str());
       all.push_back(measure(s, outDir, threads, !fast));
-      printScene(all.back(), threads);
-      std::fflush(stdout);
+      measured.push_back(s);
     }
+    std::fprintf(stderr, "bench: whole runs, %d rounds through the scenes\n", kFullRunRounds);
+    measureFullRuns(measured, outDir, threads, all);
+    for (const SceneFigures& f : all) printScene(f, threads);
     printSummary(all);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
