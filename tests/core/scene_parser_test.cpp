@@ -17,6 +17,8 @@ using test::kCameraLine;
 using test::kMaterial;
 
 const std::filesystem::path kSceneName = "bad.sce";
+// A one-triangle OFF whose face (line 6) names vertex 7 of 3.
+const std::string kBadIndexOff = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
 
 // The message of the error parsing `text` as if read from bad.sce.
 std::string sceneErrorOf(const std::string& text) {
@@ -221,7 +223,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Mesh errors name both the scene line and the mesh file with its own line.
 TEST(SceneParser, RejectsABadMeshNamingTheSceneLineAndTheMeshLine) {
   const auto dir = test::scratchDir();
-  test::writeFile(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  test::writeFile(dir / "broken.off", kBadIndexOff);
   const auto scene =
       test::writeFile(dir / "s.sce", kCameraLine + "mesh broken.off FLAT " + kMaterial + "\n");
   expectMentions(test::inputErrorOf([&] { loadScene(scene); }),
@@ -253,7 +255,7 @@ TEST(SceneParser, KeepsTheMeshesInFileOrder) {
 TEST(SceneParser, ReportsTheFirstBadMeshOfTheScene) {
   const auto dir = test::scratchDir();
   test::writeFile(dir / "tri.off", test::kTriangleOff);
-  test::writeFile(dir / "early.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  test::writeFile(dir / "early.off", kBadIndexOff);
   test::writeFile(dir / "late.off", "OFF\n3 1 0\n0 0 0\n1 0 x\n0 1 0\n3 0 1 2\n");
   const auto scene = test::writeFile(dir / "s.sce", kCameraLine + "mesh tri.off FLAT " + kMaterial +
                                                         "\nmesh early.off FLAT " + kMaterial +
@@ -267,7 +269,7 @@ TEST(SceneParser, ReportsTheFirstBadMeshOfTheScene) {
 // mesh line is reported without waiting for the mesh.
 TEST(SceneParser, ReportsAMistakeInTheSceneBeforeReadingAnyMesh) {
   const auto dir = test::scratchDir();
-  test::writeFile(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  test::writeFile(dir / "broken.off", kBadIndexOff);
   const auto scene = test::writeFile(
       dir / "s.sce", kCameraLine + "mesh broken.off FLAT " + kMaterial + "\nsphere 0 0 0\n");
   const std::string message = test::inputErrorOf([&] { loadScene(scene); });
