@@ -68,6 +68,7 @@ struct EngineFigures {
 };
 
 struct SceneFigures {
+  std::filesystem::path file;
   std::string name;
   std::size_t triangles = 0;
   double loadMs = 0;
@@ -253,13 +254,16 @@ void verify(const SceneIntersector& bvh, const SceneIntersector& none, const Ray
   }
 }
 
-SceneFigures measure(const std::filesystem::path& file, const std::filesystem::path& outDir,
-                     int threads, bool slow) {
+// Nothing for a scene the Embree side cannot trace.
+std::optional<SceneFigures> measure(const std::filesystem::path& file,
+                                    const std::filesystem::path& outDir, int threads, bool slow) {
   SceneFigures f;
+  f.file = file;
   f.name = file.stem().string();
   auto start = Clock::now();
   const Scene scene = loadScene(file);
   f.loadMs = secondsSince(start) * 1e3;
+  if (!EmbreeIntersector::supports(scene)) return std::nullopt;
   f.triangles = scene.triangleCount();
   const double tris = double(std::max<std::size_t>(f.triangles, 1));
 
@@ -306,16 +310,15 @@ SceneFigures measure(const std::filesystem::path& file, const std::filesystem::p
 // rounds through all the scenes (see kFullRunRounds): each engine's median,
 // and the median of the ratios of each of our runs to the Embree-backed run
 // just after it (the two share the machine's spell).
-void measureFullRuns(const std::vector<std::filesystem::path>& files,
-                     const std::filesystem::path& outDir, int threads,
+void measureFullRuns(const std::filesystem::path& outDir, int threads,
                      std::vector<SceneFigures>& all) {
   std::vector<std::vector<double>> ours(all.size()), embree(all.size());
   for (int round = 0; round < kFullRunRounds; ++round)
     for (std::size_t i = 0; i < all.size(); ++i)
       for (int k = 0; k < kFullRunsPerRound; ++k) {
-        ours[i].push_back(fullRunMs("bvh", files[i], outDir / (all[i].name + ".png"), threads));
+        ours[i].push_back(fullRunMs("bvh", all[i].file, outDir / (all[i].name + ".png"), threads));
         embree[i].push_back(
-            fullRunMs("embree", files[i], outDir / (all[i].name + "-embree.png"), threads));
+            fullRunMs("embree", all[i].file, outDir / (all[i].name + "-embree.png"), threads));
       }
   for (std::size_t i = 0; i < all.size(); ++i) {
     std::vector<double> pairRatios;
@@ -459,20 +462,16 @@ int main(int argc, char** argv) {
     }
     std::filesystem::create_directories(outDir);
     std::vector<SceneFigures> all;
-    std::vector<std::filesystem::path> measured;
     for (const std::string& s : scenes) {
-      const Scene probe = loadScene(s);
-      if (!EmbreeIntersector::supports(probe)) {
+      std::fprintf(stderr, "bench: measuring %s\n", s.c_str());
+      if (std::optional<SceneFigures> f = measure(s, outDir, threads, !fast))
+        all.push_back(std::move(*f));
+      else
         std::printf("\n(skipping %s: spheres or cylinders, which the Embree side lacks)\n",
                     s.c_str());
-        continue;
-      }
-      std::fprintf(stderr, "bench: measuring %s\n", s.c_str());
-      all.push_back(measure(s, outDir, threads, !fast));
-      measured.push_back(s);
     }
     std::fprintf(stderr, "bench: whole runs, %d rounds through the scenes\n", kFullRunRounds);
-    measureFullRuns(measured, outDir, threads, all);
+    measureFullRuns(outDir, threads, all);
     for (const SceneFigures& f : all) printScene(f, threads);
     printSummary(all);
   } catch (const std::exception& e) {

@@ -226,11 +226,10 @@ class SceneParser {
     tbb::parallel_for(std::size_t{0}, lines.size(), [&](std::size_t i) {
       const MeshLine& m = lines[i];
       try {
-        try {
-          loaded[i].emplace(m.file, readOff(m.file), m.shading, m.material);
-        } catch (const InputError& e) {
-          failAt(m.line, std::string("mesh: ") + e.what());
-        }
+        loaded[i].emplace(m.file, readOff(m.file), m.shading, m.material);
+      } catch (const InputError& e) {
+        failed[i] = std::make_exception_ptr(
+            InputError::atLine(file_, m.line, std::string("mesh: ") + e.what()));
       } catch (...) {
         failed[i] = std::current_exception();
       }
