@@ -505,10 +505,7 @@ bool inside(const Aabb& b, const float* n) {
          n[4] >= b.max.y && n[5] >= b.max.z;
 }
 
-TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
-  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12);
-  const std::vector<Aabb> boxes = triangleBoxes(knot);
-  const Bvh bvh = buildBvh(boxes);
+void expectEveryPrimitiveOnceInsideNestedBoxes(const Bvh& bvh, const std::vector<Aabb>& boxes) {
   ASSERT_FALSE(bvh.empty());
   EXPECT_LE(bvh.depth, kMaxBvhDepth);
   std::vector<int> seen(boxes.size(), 0);
@@ -528,6 +525,26 @@ TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
     }
   }
   for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
+  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12);
+  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(triangleBoxes(knot)), triangleBoxes(knot));
+}
+
+// Large nodes choose their split from a sample of their primitives; the
+// boxes of their children must still hold the primitives left out of it.
+// Here one box in fifty reaches far out, and the sample cannot see them all.
+TEST(BvhBuild, SplitsChosenFromASampleStillGiveBoxesHoldingEveryPrimitive) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Aabb> boxes(100000);
+  for (Aabb& b : boxes) {
+    const Vec3 p(unit(rng), unit(rng), unit(rng));
+    const double reach = unit(rng) < 0.02 ? 5.0 * unit(rng) : 0.001;
+    b = {p, p + Vec3(0.001, reach, 0.001)};
+  }
+  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(boxes), boxes);
 }
 
 // Collapsing keeps every leaf, and every child box holds its node's boxes.
