@@ -393,7 +393,7 @@ class Builder {
   // the order subtrees finish, so node numbers can differ from run to run;
   // the tree, and the 8-wide tree collapsed from it, cannot.
   struct Subtree {
-    std::vector<BvhNode> nodes = std::vector<BvhNode>(2 * kParallelSubtrees);
+    BuildVector<BvhNode> nodes;  // grown to the largest subtree's need
     std::uint32_t used = 0;
     int depth = 0;
   };
@@ -417,6 +417,9 @@ class Builder {
   void buildSubtree(BvhNode& root, std::uint32_t begin, std::uint32_t end,
                     const RangeBounds& bounds, int depth) {
     Subtree& subtree = subtrees_.local();
+    // At most 2n - 2 nodes below the root.
+    if (subtree.nodes.size() < 2 * std::size_t{end - begin})
+      subtree.nodes.resize(2 * std::size_t{end - begin});
     subtree.used = 0;
     subtree.depth = 0;
     build(root, begin, end, bounds, depth, &subtree);
