@@ -102,6 +102,9 @@ struct RangeBounds {
   Box4 box, centroids;
   void add(const PrimRef& p) {
     box.extend(p.lo, p.hi);
+    addCentroid(p);
+  }
+  void addCentroid(const PrimRef& p) {
     const __m128 c = p.centroid2();
     centroids.extend(c, c);
   }
@@ -351,10 +354,7 @@ class Builder {
         for (std::uint32_t k = from; k < to; ++k) side.add(refs_[k]);
         return side;
       }
-      for (std::uint32_t k = from; k < to; ++k) {
-        const __m128 c = refs_[k].centroid2();
-        side.centroids.extend(c, c);
-      }
+      for (std::uint32_t k = from; k < to; ++k) side.addCentroid(refs_[k]);
       side.box = binned;
       return side;
     };
