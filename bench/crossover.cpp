@@ -1,4 +1,4 @@
-#include "crossover.h"
+#include "bench/crossover.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include "meshtrace/mesh_generators.h"
-#include "rays.h"
+#include "bench/rays.h"
+#include "meshtrace/geometry/mesh_generators.h"
 
 namespace meshtrace::bench {
 

@@ -1,4 +1,4 @@
-#include "embree_intersector.h"
+#include "bench/embree_intersector.h"
 
 #include <chrono>
 #include <cstddef>

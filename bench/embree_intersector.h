@@ -7,7 +7,7 @@
 #include <atomic>
 #include <vector>
 
-#include "meshtrace/intersector.h"
+#include "meshtrace/accel/intersector.h"
 
 namespace meshtrace::bench {
 

@@ -1,4 +1,4 @@
-#include "full_run.h"
+#include "bench/full_run.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -10,10 +10,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "embree_intersector.h"
-#include "meshtrace/image.h"
-#include "meshtrace/render.h"
-#include "meshtrace/scene_parser.h"
+#include "bench/embree_intersector.h"
+#include "meshtrace/io/image.h"
+#include "meshtrace/io/scene_parser.h"
+#include "meshtrace/render/render.h"
 
 extern char** environ;
 

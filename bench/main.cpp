@@ -2,7 +2,6 @@
 // Every speed figure is also given as a ratio to Embree measured in the same
 // run, since only ratios hold on a shared, noisy machine.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -12,13 +11,13 @@
 #include <thread>
 #include <vector>
 
-#include "crossover.h"
-#include "embree_intersector.h"
-#include "full_run.h"
-#include "mesh_scenes.h"
-#include "meshtrace/intersector.h"
-#include "meshtrace/scene_parser.h"
-#include "rays.h"
+#include "bench/crossover.h"
+#include "bench/embree_intersector.h"
+#include "bench/full_run.h"
+#include "bench/mesh_scenes.h"
+#include "bench/rays.h"
+#include "meshtrace/accel/intersector.h"
+#include "meshtrace/io/scene_parser.h"
 
 using namespace meshtrace;
 using namespace meshtrace::bench;
@@ -270,7 +269,7 @@ std::optional<SceneFigures> measure(const std::filesystem::path& file,
   start = Clock::now();
   const SceneIntersector ours(scene, TraceOptions{});
   f.ours.buildMs = secondsSince(start) * 1e3;
-  const SceneBvhStats& st = ours.bvh()->stats();
+  const SceneBvhStats& st = *ours.bvhStats();
   f.ours.structureBytesPerTriangle = (st.meshBvhBytes + st.topLevelBytes) / tris;
   f.ours.bytesPerTriangle = *f.ours.structureBytesPerTriangle + meshBytes(scene) / tris;
   const EmbreeIntersector embree(scene, RTC_BUILD_QUALITY_MEDIUM);

@@ -1,10 +1,10 @@
-#include "mesh_scenes.h"
+#include "bench/mesh_scenes.h"
 
 #include <fstream>
 #include <stdexcept>
 
-#include "meshtrace/mesh_generators.h"
-#include "meshtrace/off_reader.h"
+#include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/io/off_reader.h"
 
 namespace meshtrace::bench {
 

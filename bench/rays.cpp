@@ -1,7 +1,7 @@
-#include "rays.h"
+#include "bench/rays.h"
 
-#include "meshtrace/spawn.h"
-#include "meshtrace/surface.h"
+#include "meshtrace/render/spawn.h"
+#include "meshtrace/render/surface.h"
 
 namespace meshtrace::bench {
 

@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "meshtrace/intersector.h"
+#include "meshtrace/accel/intersector.h"
 
 namespace meshtrace::bench {
 

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "meshtrace/input_error.h"
-#include "meshtrace/off_reader.h"
+#include "meshtrace/io/input_error.h"
+#include "meshtrace/io/off_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace meshtrace;

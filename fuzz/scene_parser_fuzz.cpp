@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "meshtrace/input_error.h"
-#include "meshtrace/integrator.h"
-#include "meshtrace/scene_parser.h"
+#include "meshtrace/io/input_error.h"
+#include "meshtrace/io/scene_parser.h"
+#include "meshtrace/render/integrator.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace meshtrace;

@@ -1,4 +1,4 @@
-#include "batch.h"
+#include "common/batch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "meshtrace/input_error.h"
-#include "meshtrace/image.h"
-#include "meshtrace/scene_parser.h"
+#include "meshtrace/io/image.h"
+#include "meshtrace/io/input_error.h"
+#include "meshtrace/io/scene_parser.h"
 
 namespace meshtrace::app {
 

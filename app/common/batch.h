@@ -9,7 +9,7 @@
 #include <system_error>
 #include <vector>
 
-#include "meshtrace/scene.h"
+#include "meshtrace/geometry/scene.h"
 
 namespace meshtrace::app {
 

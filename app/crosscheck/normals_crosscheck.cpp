@@ -1,4 +1,4 @@
-#include "normals_crosscheck.h"
+#include "crosscheck/normals_crosscheck.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "meshtrace/mesh.h"
+#include "meshtrace/geometry/mesh.h"
 
 namespace meshtrace::crosscheck {
 

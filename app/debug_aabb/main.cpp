@@ -1,13 +1,12 @@
 // debug_aabb: per pixel, how many mesh bounding boxes the primary ray meets.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "../common/batch.h"
-#include "meshtrace/render.h"
+#include "common/batch.h"
+#include "meshtrace/render/render.h"
 
 using namespace meshtrace;
 

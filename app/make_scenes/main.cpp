@@ -1,14 +1,13 @@
 // make_scenes: writes the generated meshes that our scenes/ use. The .sce
 // files themselves are written by hand; run this after changing a generator.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "meshtrace/mesh_generators.h"
+#include "meshtrace/geometry/mesh_generators.h"
 
 using namespace meshtrace;
 

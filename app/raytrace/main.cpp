@@ -1,17 +1,16 @@
 // raytrace: render one scene, or every scene in a folder.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "../common/batch.h"
-#include "meshtrace/left_out.h"
-#include "meshtrace/report.h"
-#include "meshtrace/stability.h"
-#include "meshtrace/render.h"
+#include "common/batch.h"
+#include "meshtrace/render/render.h"
+#include "meshtrace/report/left_out.h"
+#include "meshtrace/report/report.h"
+#include "meshtrace/report/stability.h"
 
 using namespace meshtrace;
 
@@ -30,8 +29,8 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
   const auto start = std::chrono::steady_clock::now();
   const Image image = render(intersector, options.render.threads, &counters);
   const double renderMs = app::millisecondsSince(start);
-  if (const SceneBvh* bvh = intersector.bvh()) {
-    const std::size_t meshes = bvh->stats().meshesWithBvh, top = bvh->stats().topLevelObjects;
+  if (const SceneBvhStats* bvh = intersector.bvhStats()) {
+    const std::size_t meshes = bvh->meshesWithBvh, top = bvh->topLevelObjects;
     std::printf("built the BVH (%zu mesh%s in the triangle BVH, %zu object%s on top) in %.1f ms\n",
                 meshes, meshes == 1 ? "" : "es", top, top == 1 ? "" : "s", buildMs);
   }
@@ -43,8 +42,8 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
     std::printf("%s", counters.describe().c_str());
     std::printf("vertex normals computed: %zu\n", vertexNormalsComputed(scene));
     for (const std::string& s : leftOut(scene)) std::printf("left out: %s\n", s.c_str());
-    if (const SceneBvh* bvh = intersector.bvh())
-      for (const std::string& s : bvh->stats().leftOut) std::printf("left out: %s\n", s.c_str());
+    if (const SceneBvhStats* bvh = intersector.bvhStats())
+      for (const std::string& s : bvh->leftOut) std::printf("left out: %s\n", s.c_str());
   }
   try {
     const auto writeStart = std::chrono::steady_clock::now();

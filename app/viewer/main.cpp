@@ -1,8 +1,8 @@
 // viewer: the interactive scene viewer and pixel debugger.
 #include <cstdlib>
 
-#include "model/options.h"
-#include "platform/run.h"
+#include "viewer/model/options.h"
+#include "viewer/platform/run.h"
 
 int main(int argc, char** argv) {
   // Mesa's software rasteriser (llvmpipe, all there is without a GPU) then

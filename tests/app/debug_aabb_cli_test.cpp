@@ -1,11 +1,11 @@
 // The debug_aabb tool: the box-count image, and clean refusals of bad input.
 #include <gtest/gtest.h>
 
-#include "../support/cli.h"
-#include "../support/files.h"
-#include "../support/paths.h"
-#include "../support/scene_snippets.h"
-#include "meshtrace/image.h"
+#include "meshtrace/io/image.h"
+#include "support/cli.h"
+#include "support/files.h"
+#include "support/paths.h"
+#include "support/scene_snippets.h"
 
 namespace meshtrace {
 namespace {

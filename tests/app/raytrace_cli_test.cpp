@@ -2,11 +2,11 @@
 // and never leaves a broken or half-written output file.
 #include <gtest/gtest.h>
 
-#include "../support/cli.h"
-#include "../support/files.h"
-#include "../support/paths.h"
-#include "../support/scene_snippets.h"
-#include "meshtrace/image.h"
+#include "meshtrace/io/image.h"
+#include "support/cli.h"
+#include "support/files.h"
+#include "support/paths.h"
+#include "support/scene_snippets.h"
 
 namespace meshtrace {
 namespace {

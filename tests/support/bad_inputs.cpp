@@ -1,6 +1,6 @@
-#include "bad_inputs.h"
+#include "support/bad_inputs.h"
 
-#include "scene_snippets.h"
+#include "support/scene_snippets.h"
 
 namespace meshtrace::test {
 

@@ -1,9 +1,9 @@
-#include "cli.h"
+#include "support/cli.h"
 
 #include <gtest/gtest.h>
 
-#include "files.h"
-#include "paths.h"
+#include "support/files.h"
+#include "support/paths.h"
 
 namespace meshtrace::test {
 
@@ -20,8 +20,9 @@ ToolResult expectRefusal(const std::filesystem::path& tool, const std::vector<st
   for (const std::string& m : mentions)
     EXPECT_NE(result.err.find(m), std::string::npos)
         << "stderr should mention '" << m << "'\n" << describe(result);
-  if (outputExisted)
+  if (outputExisted) {
     EXPECT_TRUE(readFileBytes(output) == before) << "the old output must be left as it was";
+  }
   EXPECT_EQ(listFolder(dir), filesBefore) << "no partial or temporary file may be left";
   return result;
 }

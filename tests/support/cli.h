@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "bad_inputs.h"
-#include "run_tool.h"
+#include "support/bad_inputs.h"
+#include "support/run_tool.h"
 
 namespace meshtrace::test {
 

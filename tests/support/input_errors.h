@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "meshtrace/input_error.h"
+#include "meshtrace/io/input_error.h"
 
 namespace meshtrace::test {
 

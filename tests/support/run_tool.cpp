@@ -1,4 +1,4 @@
-#include "run_tool.h"
+#include "support/run_tool.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "files.h"
+#include "support/files.h"
 
 extern char** environ;
 

@@ -1,4 +1,4 @@
-#include "gl_api.h"
+#include "viewer/gl/gl_api.h"
 
 #define MESHTRACE_GL_DEFINE(type, name) type meshtrace_##name = nullptr;
 MESHTRACE_GL_FUNCTIONS(MESHTRACE_GL_DEFINE)

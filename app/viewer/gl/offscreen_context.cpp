@@ -1,10 +1,10 @@
-#include "offscreen_context.h"
+#include "viewer/gl/offscreen_context.h"
 
 #include <dlfcn.h>
 
 #include <stdexcept>
 
-#include "gl_api.h"
+#include "viewer/gl/gl_api.h"
 
 namespace meshtrace::gl {
 

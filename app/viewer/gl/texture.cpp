@@ -1,6 +1,6 @@
-#include "texture.h"
+#include "viewer/gl/texture.h"
 
-#include "gl_api.h"
+#include "viewer/gl/gl_api.h"
 
 namespace meshtrace::gl {
 

@@ -1,4 +1,4 @@
-#include "camera_control.h"
+#include "viewer/model/camera_control.h"
 
 #include <charconv>
 #include <glm/gtc/matrix_transform.hpp>

@@ -2,7 +2,7 @@
 // Mouse camera control on a scene camera, and the camera's line in .sce syntax.
 #include <string>
 
-#include "meshtrace/camera.h"
+#include "meshtrace/geometry/camera.h"
 
 namespace meshtrace::viewer {
 

@@ -1,6 +1,6 @@
-#include "folder_browser.h"
+#include "viewer/model/folder_browser.h"
 
-#include "scene_catalog.h"
+#include "viewer/model/scene_catalog.h"
 
 namespace meshtrace::viewer {
 

@@ -1,4 +1,4 @@
-#include "frame_stats.h"
+#include "viewer/model/frame_stats.h"
 
 #include <algorithm>
 #include <cmath>

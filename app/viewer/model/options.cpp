@@ -1,4 +1,4 @@
-#include "options.h"
+#include "viewer/model/options.h"
 
 #include <CLI/CLI.hpp>
 

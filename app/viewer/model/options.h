@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "views.h"
+#include "viewer/model/views.h"
 
 namespace meshtrace::viewer {
 

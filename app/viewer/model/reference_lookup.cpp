@@ -1,4 +1,4 @@
-#include "reference_lookup.h"
+#include "viewer/model/reference_lookup.h"
 
 namespace meshtrace::viewer {
 

@@ -1,9 +1,9 @@
-#include "scene_catalog.h"
-
-#include "../../common/batch.h"
+#include "viewer/model/scene_catalog.h"
 
 #include <algorithm>
 #include <system_error>
+
+#include "common/batch.h"
 
 namespace meshtrace::viewer {
 

@@ -1,4 +1,4 @@
-#include "scene_writer.h"
+#include "viewer/model/scene_writer.h"
 
 #include <fstream>
 #include <map>

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "meshtrace/mesh.h"
+#include "meshtrace/geometry/mesh.h"
 
 namespace meshtrace::viewer {
 

@@ -1,10 +1,10 @@
-#include "session.h"
+#include "viewer/model/session.h"
 
 #include <chrono>
 #include <map>
 
-#include "meshtrace/scene_parser.h"
-#include "scene_writer.h"
+#include "meshtrace/io/scene_parser.h"
+#include "viewer/model/scene_writer.h"
 
 namespace meshtrace::viewer {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "meshtrace/progressive.h"
-#include "meshtrace/scene.h"
+#include "meshtrace/geometry/scene.h"
+#include "meshtrace/render/progressive.h"
 
 namespace meshtrace::viewer {
 

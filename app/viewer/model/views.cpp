@@ -1,9 +1,9 @@
-#include "views.h"
+#include "viewer/model/views.h"
 
 #include <array>
 #include <cmath>
 
-#include "meshtrace/inspect_colors.h"
+#include "meshtrace/render/inspect_colors.h"
 
 namespace meshtrace::viewer {
 

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "meshtrace/inspect.h"
+#include "meshtrace/render/inspect.h"
 
 namespace meshtrace::viewer {
 

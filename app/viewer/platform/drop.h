@@ -2,7 +2,7 @@
 // Files dropped on the window: GLFW hands over C strings; the app opens
 // each path in turn (a .sce opens, a folder joins the list, anything else
 // is refused with a message).
-#include "../ui/viewer_app.h"
+#include "viewer/ui/viewer_app.h"
 
 namespace meshtrace::viewer {
 

@@ -1,4 +1,4 @@
-#include "frame_loop.h"
+#include "viewer/platform/frame_loop.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
@@ -6,10 +6,10 @@
 #include <chrono>
 #include <thread>
 
-#include "../gl/gl_api.h"
-#include "../gl/offscreen_context.h"
-#include "../gl/texture.h"
-#include "../ui/panels.h"
+#include "viewer/gl/gl_api.h"
+#include "viewer/gl/offscreen_context.h"
+#include "viewer/gl/texture.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

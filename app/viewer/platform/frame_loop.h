@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "../ui/viewer_app.h"
+#include "viewer/ui/viewer_app.h"
 
 namespace meshtrace::viewer {
 

@@ -6,9 +6,9 @@
 #include <condition_variable>
 #include <mutex>
 
-#include "../gl/offscreen_context.h"
-#include "frame_loop.h"
-#include "run.h"
+#include "viewer/gl/offscreen_context.h"
+#include "viewer/platform/frame_loop.h"
+#include "viewer/platform/run.h"
 
 namespace meshtrace::viewer {
 

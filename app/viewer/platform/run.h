@@ -3,7 +3,7 @@
 // writing a snapshot of the whole window once the render is done.
 #include <filesystem>
 
-#include "../model/options.h"
+#include "viewer/model/options.h"
 
 namespace meshtrace::viewer {
 

@@ -4,10 +4,10 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
-#include "../gl/gl_api.h"
-#include "drop.h"
-#include "frame_loop.h"
-#include "run.h"
+#include "viewer/gl/gl_api.h"
+#include "viewer/platform/drop.h"
+#include "viewer/platform/frame_loop.h"
+#include "viewer/platform/run.h"
 
 namespace meshtrace::viewer {
 

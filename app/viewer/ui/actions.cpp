@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "../model/camera_control.h"
-#include "../model/reference_lookup.h"
-#include "panels.h"
+#include "viewer/model/camera_control.h"
+#include "viewer/model/reference_lookup.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

@@ -1,8 +1,8 @@
 // The camera: its .sce line (print, copy), reset, and how the mouse moves it.
 #include <imgui.h>
 
-#include "../model/camera_control.h"
-#include "panels.h"
+#include "viewer/model/camera_control.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

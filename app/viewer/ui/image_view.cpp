@@ -3,8 +3,8 @@
 // orbits, right drag pans, the wheel zooms, a click pins a pixel).
 #include <imgui.h>
 
-#include "../model/camera_control.h"
-#include "panels.h"
+#include "viewer/model/camera_control.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

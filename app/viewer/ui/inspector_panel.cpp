@@ -2,8 +2,8 @@
 // pixel (or the pinned one when the mouse is elsewhere).
 #include <imgui.h>
 
-#include "meshtrace/inspect.h"
-#include "panels.h"
+#include "meshtrace/render/inspect.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

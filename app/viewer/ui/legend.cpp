@@ -1,8 +1,8 @@
 // A heat map's colour scale with its numbers.
 #include <imgui.h>
 
-#include "meshtrace/inspect_colors.h"
-#include "panels.h"
+#include "meshtrace/render/inspect_colors.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

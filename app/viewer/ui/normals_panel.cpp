@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "panels.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

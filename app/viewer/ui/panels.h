@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "render_display.h"
-#include "state.h"
+#include "viewer/ui/render_display.h"
+#include "viewer/ui/state.h"
 
 namespace meshtrace::viewer {
 

@@ -1,4 +1,4 @@
-#include "render_display.h"
+#include "viewer/ui/render_display.h"
 
 #include <sys/resource.h>
 #include <unistd.h>

@@ -7,12 +7,12 @@
 #include <functional>
 #include <memory>
 
-#include "../gl/texture.h"
-#include "../model/session.h"
-#include "../model/views.h"
-#include "meshtrace/image.h"
-#include "meshtrace/progressive.h"
-#include "view_textures.h"
+#include "meshtrace/io/image.h"
+#include "meshtrace/render/progressive.h"
+#include "viewer/gl/texture.h"
+#include "viewer/model/session.h"
+#include "viewer/model/views.h"
+#include "viewer/ui/view_textures.h"
 
 namespace meshtrace::viewer {
 

@@ -2,8 +2,8 @@
 // and the legend of the heat maps shown.
 #include <imgui.h>
 
-#include "meshtrace/inspect.h"
-#include "panels.h"
+#include "meshtrace/render/inspect.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

@@ -2,7 +2,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "panels.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

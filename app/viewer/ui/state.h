@@ -8,16 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "../gl/texture.h"
-#include "../model/folder_browser.h"
-#include "../model/frame_stats.h"
-#include "../model/options.h"
-#include "../model/scene_catalog.h"
-#include "../model/session.h"
-#include "../model/views.h"
-#include "meshtrace/image_compare.h"
-#include "normals_crosscheck.h"
-#include "render_display.h"
+#include "crosscheck/normals_crosscheck.h"
+#include "meshtrace/report/image_compare.h"
+#include "viewer/gl/texture.h"
+#include "viewer/model/folder_browser.h"
+#include "viewer/model/frame_stats.h"
+#include "viewer/model/options.h"
+#include "viewer/model/scene_catalog.h"
+#include "viewer/model/session.h"
+#include "viewer/model/views.h"
+#include "viewer/ui/render_display.h"
 
 namespace meshtrace::viewer {
 

@@ -1,9 +1,9 @@
-#include "view_textures.h"
+#include "viewer/ui/view_textures.h"
 
 #include <algorithm>
 
-#include "meshtrace/image.h"
-#include "meshtrace/inspect_colors.h"
+#include "meshtrace/io/image.h"
+#include "meshtrace/render/inspect_colors.h"
 
 namespace meshtrace::viewer {
 

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "../gl/texture.h"
-#include "../model/views.h"
-#include "meshtrace/progressive.h"
+#include "meshtrace/render/progressive.h"
+#include "viewer/gl/texture.h"
+#include "viewer/model/views.h"
 
 namespace meshtrace::viewer {
 

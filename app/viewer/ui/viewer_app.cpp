@@ -1,10 +1,10 @@
-#include "viewer_app.h"
+#include "viewer/ui/viewer_app.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 
-#include "panels.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "render_display.h"
-#include "state.h"
+#include "viewer/ui/render_display.h"
+#include "viewer/ui/state.h"
 
 namespace meshtrace::viewer {
 

@@ -1,17 +1,17 @@
 // Our angle-weighted vertex normals against OpenMesh's half-edge computation,
 // on every mesh we have: the seed's (when ../shared/seed exists), our
 // scenes' and the tests' own.
-#include "normals_crosscheck.h"
+#include "crosscheck/normals_crosscheck.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "../../support/paths.h"
-#include "meshtrace/mesh_generators.h"
-#include "meshtrace/off_reader.h"
-#include "meshtrace/triangle.h"
+#include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/geometry/triangle.h"
+#include "meshtrace/io/off_reader.h"
+#include "support/paths.h"
 
 namespace meshtrace {
 namespace {

@@ -1,19 +1,19 @@
 // The viewer app without a display: what a drop on the window, the folder
 // browser and the camera's Copy button do, and the frame statistics.
-#include "ui/viewer_app.h"
+#include "viewer/ui/viewer_app.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
 
 #include <fstream>
 
-#include "../../support/paths.h"
-#include "meshtrace/scene_parser.h"
-#include "model/camera_control.h"
-#include "model/folder_browser.h"
-#include "model/frame_stats.h"
-#include "platform/drop.h"
-#include "ui/panels.h"
+#include "meshtrace/io/scene_parser.h"
+#include "support/paths.h"
+#include "viewer/model/camera_control.h"
+#include "viewer/model/folder_browser.h"
+#include "viewer/model/frame_stats.h"
+#include "viewer/platform/drop.h"
+#include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 namespace {

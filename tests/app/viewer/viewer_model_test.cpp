@@ -3,15 +3,15 @@
 
 #include <fstream>
 
-#include "../../support/paths.h"
-#include "meshtrace/scene_parser.h"
-#include "model/camera_control.h"
-#include "model/options.h"
-#include "model/reference_lookup.h"
-#include "model/scene_catalog.h"
-#include "model/scene_writer.h"
-#include "model/session.h"
-#include "model/views.h"
+#include "meshtrace/io/scene_parser.h"
+#include "support/paths.h"
+#include "viewer/model/camera_control.h"
+#include "viewer/model/options.h"
+#include "viewer/model/reference_lookup.h"
+#include "viewer/model/scene_catalog.h"
+#include "viewer/model/scene_writer.h"
+#include "viewer/model/session.h"
+#include "viewer/model/views.h"
 
 namespace meshtrace::viewer {
 namespace {

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "../../support/paths.h"
-#include "meshtrace/image.h"
-#include "meshtrace/image_compare.h"
+#include "meshtrace/io/image.h"
+#include "meshtrace/report/image_compare.h"
+#include "support/paths.h"
 
 namespace meshtrace {
 namespace {

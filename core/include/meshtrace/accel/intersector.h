@@ -1,0 +1,82 @@
+#pragma once
+// Closest-hit and any-hit queries over a whole scene, with a selectable
+// acceleration method.
+#include <cstdint>
+#include <memory>
+
+#include "meshtrace/accel/bvh_stats.h"
+#include "meshtrace/accel/trace_options.h"
+#include "meshtrace/geometry/scene.h"
+#include "meshtrace/util/counters.h"
+
+namespace meshtrace {
+
+class SceneBvh;
+
+// Rays traced together by the packet queries: the 2x2 pixel quads of a
+// render, their shadow rays and their mirror reflections.
+inline constexpr int kPacketSize = 4;
+
+// Another engine answering the same two queries: the benchmark plugs Embree
+// in here to render with exactly our shading.
+class ExternalIntersector {
+ public:
+  virtual ~ExternalIntersector() = default;
+  virtual bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters) const = 0;
+  virtual bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters) const = 0;
+};
+
+class SceneIntersector {
+ public:
+  // Builds the BVH when options.accel is Bvh.
+  SceneIntersector(const Scene& scene, const TraceOptions& options);
+  // Every query goes to `external` (which must outlive this); `options` still
+  // tells shading the precision of the hits.
+  SceneIntersector(const Scene& scene, const TraceOptions& options,
+                   const ExternalIntersector& external);
+  ~SceneIntersector();
+
+  // Nearest hit with t > tMin; `hit.t` may carry an upper limit on entry.
+  // `start`, for a spawned ray, is the primitive it leaves
+  // (SurfacePoint::primitive): a triangle there is not tested (spawn.h).
+  bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
+                  const PrimitiveRef* start = nullptr) const;
+  // closestHit for the kPacketSize rays (scene_bvh.h) named in `active`
+  // (bit r: rays[r], leaving start[r] when `start` is given), answered
+  // exactly as separate calls would be; with --accel bvh, rays that share an
+  // octant of directions, such as the primary rays of a 2x2 pixel quad or
+  // their mirror reflections off a plane, are traced together. found[r]
+  // tells whether ray r hit (false for inactive rays). Every rays[r] must be
+  // a valid ray, active or not: give inactive slots a copy of an active ray.
+  void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found, Counters& counters,
+                        const PrimitiveRef* start = nullptr, std::uint32_t active = 0xfu) const;
+  // occluded for the kPacketSize rays named in `active` (bit r: rays[r], up
+  // to tMax[r], leaving start[r]); returns those blocked, exactly as four
+  // calls would. With --accel bvh they are traced together. Every rays[r]
+  // must be a valid ray, active or not.
+  std::uint32_t occludedPacket(const Ray* rays, double tMin, const double* tMax,
+                               const PrimitiveRef* start, std::uint32_t active,
+                               Counters& counters) const;
+  // True if anything lies at tMin < t < tMax; `start` as above.
+  bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
+                const PrimitiveRef* start = nullptr) const;
+
+  const Scene& scene() const { return scene_; }
+  const TraceOptions& options() const { return options_; }
+  // What the scene's BVH holds and left out; null for the other methods.
+  const SceneBvhStats* bvhStats() const;
+  // The BVH itself, for the library's own tests (its type is internal).
+  const SceneBvh* bvh() const { return bvh_.get(); }
+
+ private:
+  // Brute force: false only when the aabb method rules the mesh out by its box.
+  bool meshMayBeHit(std::uint32_t index, const RayInverse& inverse, double tMin, double tMax,
+                    Counters& counters) const;
+
+  const Scene& scene_;
+  TraceOptions options_;
+  std::unique_ptr<SceneBvh> bvh_;
+  const ExternalIntersector* external_ = nullptr;
+};
+
+}  // namespace meshtrace

@@ -1,0 +1,60 @@
+#pragma once
+// A triangle mesh with its shading mode, normals and bounding box.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "meshtrace/geometry/aabb.h"
+#include "meshtrace/geometry/material.h"
+
+namespace meshtrace {
+
+enum class Shading : std::uint8_t { Flat, Phong };
+
+const char* toString(Shading shading);
+
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+struct MeshData {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+};
+
+class Mesh {
+ public:
+  Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material);
+
+  const std::filesystem::path& file() const { return file_; }
+  const Material& material() const { return material_; }
+  Shading shading() const { return shading_; }
+  const Aabb& bounds() const { return bounds_; }
+  const std::vector<Vec3>& vertices() const { return data_.vertices; }
+  const std::vector<TriangleIndices>& triangles() const { return data_.triangles; }
+  const std::vector<Vec3>& triangleNormals() const { return triangleNormals_; }
+  // Empty unless the mesh is PHONG shaded: a FLAT mesh never needs them.
+  const std::vector<Vec3>& vertexNormals() const { return vertexNormals_; }
+
+  // Switching to PHONG computes the vertex normals if they are missing.
+  void setShading(Shading shading);
+
+  // The shading normal at barycentrics (beta, gamma) of triangle `tri`.
+  Vec3 shadingNormal(std::uint32_t tri, double beta, double gamma) const;
+
+ private:
+  std::filesystem::path file_;
+  MeshData data_;
+  Shading shading_;
+  Material material_;
+  Aabb bounds_;
+  std::vector<Vec3> triangleNormals_;
+  std::vector<Vec3> vertexNormals_;
+};
+
+// Angle-weighted vertex normals, summed in triangle order (the same bits on
+// any number of threads). A triangle listed more than once counts once; a
+// vertex with no non-degenerate incident triangle gets the zero vector.
+std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
+                                             const std::vector<Vec3>& triangleNormals);
+
+}  // namespace meshtrace

@@ -1,0 +1,20 @@
+#pragma once
+// Reader for the `.sce` scene format (see SCENE_FORMAT in the README).
+#include <filesystem>
+#include <string_view>
+
+#include "meshtrace/geometry/scene.h"
+
+namespace meshtrace {
+
+// Throws InputError naming the file and line on bad input. Mesh paths are
+// resolved against the scene file's folder; the meshes are read, side by
+// side, once the whole scene file has parsed, and of several bad meshes the
+// first in the file is the one reported.
+Scene loadScene(const std::filesystem::path& file);
+
+// Parses scene text that claims to come from `file` (used for messages and
+// for resolving mesh paths).
+Scene parseScene(std::string_view text, const std::filesystem::path& file);
+
+}  // namespace meshtrace

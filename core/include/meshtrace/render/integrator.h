@@ -1,0 +1,40 @@
+#pragma once
+// Whitted-style shading: ambient, diffuse and specular per light, hard
+// shadows, and mirror reflection up to the scene's depth.
+#include "meshtrace/accel/intersector.h"
+
+namespace meshtrace {
+
+inline constexpr std::size_t kMaxPacketLights = 32;
+
+class Integrator {
+ public:
+  explicit Integrator(const SceneIntersector& intersector) : intersector_(intersector) {}
+
+  // Colour seen along `ray`, which is at recursion level `level` (0 = primary).
+  Color trace(const Ray& ray, int level, Counters& counters) const;
+  // Colour at image position (x, y) in pixels of the scene's camera; y = 0 is
+  // the bottom row.
+  Color pixel(double x, double y, Counters& counters) const;
+  // The colours of the 2x2 pixels (x, y), (x + 1, y), (x, y + 1) and
+  // (x + 1, y + 1), in that order: pixel() of each, with their primary rays
+  // traced as one packet, the shadow rays toward each light from their hits
+  // as another, and their mirror reflections as the next level's packet (up
+  // to kMaxPacketLights lights; with more, each ray's shading goes on alone).
+  void quad(double x, double y, Color out[4], Counters& counters) const;
+  // The same through another camera (the viewer's, once moved).
+  Color pixel(const Camera& camera, double x, double y, Counters& counters) const;
+
+  const SceneIntersector& intersector() const { return intersector_; }
+
+ private:
+  // What quad() does at recursion level `level`, for the rays named in
+  // `active` (bit r: rays[r], leaving start[r] when `start` is given), into
+  // out[r]; the other slots are left alone.
+  void shadePacket(const Ray* rays, std::uint32_t active, int level, const PrimitiveRef* start,
+                   Color* out, Counters& counters) const;
+
+  const SceneIntersector& intersector_;
+};
+
+}  // namespace meshtrace

@@ -1,0 +1,159 @@
+#pragma once
+// Progressive rendering on background threads, for an interactive viewer.
+//
+// A job renders the image coarse to fine, tile by tile: the first pass traces
+// one pixel per block of `firstStep` x `firstStep` pixels, each later pass
+// halves the block and traces only the pixels the earlier passes did not,
+// down to every pixel (the exact image, each pixel traced once, exactly as
+// `render` traces it). Optional passes then add one jittered sample per pixel
+// each (anti-aliasing). Each finished tile is published at once; a viewer
+// copies the tiles that changed since its last look. Starting a new job
+// cancels the one in flight: workers check between pixels.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "meshtrace/accel/intersector.h"
+#include "meshtrace/render/inspect.h"
+#include "meshtrace/util/counters.h"
+
+namespace meshtrace {
+
+// A scene with its intersector (and so its BVH), built once on first use by
+// whichever thread needs it first, and shared by every job and inspector
+// query on that scene: moving the camera does not rebuild it.
+class PreparedScene {
+ public:
+  PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options);
+  ~PreparedScene();
+  const Scene& scene() const { return *scene_; }
+  const TraceOptions& options() const { return options_; }
+  const SceneIntersector& intersector() const;
+
+ private:
+  std::shared_ptr<const Scene> scene_;
+  TraceOptions options_;
+  mutable std::once_flag built_;
+  mutable std::unique_ptr<SceneIntersector> intersector_;
+};
+
+struct ProgressiveSettings {
+  int firstStep = 32;    // block size of the first pass: a power of two, also the tile size
+  int extraSamples = 0;  // anti-aliasing samples per pixel beyond the exact one
+  bool color = true;     // trace colours (the Integrator)
+  bool probes = false;   // record a PixelProbe per pixel for the false-colour views
+};
+
+struct ProgressiveStatus {
+  std::uint64_t job = 0;
+  bool running = false;  // a job exists and has work left
+  int passesDone = 0, passCount = 0;
+  double exactFraction = 0.0;  // share of the exact image's pixels traced
+  bool coarseDone = false, exactDone = false, finished = false;
+  int samplesPerPixel = 0;  // complete samples in every pixel
+  double elapsedMs = 0.0;   // since start; stops when the job finishes
+  double firstCoarseMs = -1.0, exactMs = -1.0, finishedMs = -1.0;  // -1 until reached
+  Counters counters;                                               // work of the published tiles
+};
+
+// What a pass that just completed brings: the first (coarse) image, the
+// exact one, the end of the job.
+struct PassFinished {
+  int pass = 0;
+  bool coarse = false, exact = false, last = false;
+};
+
+// The viewer's copy of a job's image: colours as RGBA8 (when the job traces
+// colours), the job's probes (when it records them) and per tile the step
+// of the last pass that reached it (1 once exact). Both hold a pixel only
+// where a pass traced it: at multiples of its tile's step, each standing
+// for the step x step block it is the corner of (probeAt and rgbaAt).
+struct ProgressiveFrame {
+  std::uint64_t job = 0;
+  int width = 0, height = 0, tileSize = 0, tilesX = 0, tilesY = 0;
+  std::vector<std::uint8_t> rgba;            // row 0 at the top
+  std::span<const PixelProbe> probes;        // the job's own
+  std::shared_ptr<const void> probeStorage;  // keeps `probes` alive
+  std::vector<int> tileStep;                 // 0 while a tile has nothing yet
+  std::vector<std::uint32_t> tileVersion;
+
+  // What stands for storage pixel (col, row) at its tile's step; null
+  // where nothing was traced yet.
+  const PixelProbe* probeAt(int col, int row) const;
+  const std::uint8_t* rgbaAt(int col, int row) const;
+  // The index of that pixel.
+  std::optional<std::size_t> cornerOf(int col, int row) const;
+};
+
+class ProgressiveRenderer {
+ public:
+  // threads = 0: one worker per core. `workerStart` runs first on each
+  // worker thread (a viewer lowers their priority there, to keep drawing).
+  // `passFinished` runs on the worker that completes a pass of a job, so a
+  // viewer waiting for events can wake and show it at once; it must be
+  // quick and must not call back into the renderer.
+  explicit ProgressiveRenderer(int threads = 0, std::function<void()> workerStart = {},
+                               std::function<void(const PassFinished&)> passFinished = {});
+  ~ProgressiveRenderer();
+  ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+  ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+
+  // Cancels the job in flight and starts rendering `scene` through `camera`
+  // (the scene's own camera is not used). Returns the new job's id.
+  std::uint64_t start(std::shared_ptr<const PreparedScene> scene, const Camera& camera,
+                      const ProgressiveSettings& settings);
+  void cancel();
+  // Until called again with a smaller count, workers 0 .. count-1 wait
+  // between pixels (except while another worker needs the tile they hold):
+  // a viewer lends itself a core for the time it draws a frame, without
+  // lowering the render's priority against other programs.
+  void pauseWorkers(int count);
+
+  ProgressiveStatus status() const;
+  // Brings `frame` up to date with the current job (resizing it for a new
+  // job) and returns the indices of the tiles that changed.
+  std::vector<int> update(ProgressiveFrame& frame) const;
+  // Blocks until the current job finishes, or the timeout; true if finished.
+  bool waitUntilFinished(double timeoutMs) const;
+
+  int threads() const { return static_cast<int>(workers_.size()); }
+
+  struct Job;
+  struct Buffers;
+  class BufferPool;
+
+ private:
+  void workerLoop(int worker);
+  // Between pixels: waits while `worker` is paused; false once `job` is cancelled.
+  bool mayGoOn(const Job& job, int worker);
+  // Until done() (part of `job` that other workers hold); false if the job
+  // is cancelled first.
+  bool waitFor(const Job& job, const std::function<bool()>& done);
+  void resumeCancelled();
+
+  std::function<void(const PassFinished&)> passFinished_;
+  std::shared_ptr<BufferPool> pool_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::shared_ptr<Job> current_;
+  std::uint64_t generation_ = 0;
+  bool stopping_ = false;
+  std::mutex pauseMutex_;
+  std::condition_variable resumed_;
+  alignas(64) std::atomic<int> paused_{0};          // read between pixels: a line of its own
+  alignas(64) std::atomic<int> waitingForWork_{0};  // workers waiting for work others hold
+  std::vector<std::thread> workers_;
+};
+
+// The offset in [-0.5, 0.5)^2 of anti-aliasing sample k >= 1 (an R2
+// low-discrepancy sequence), so sample 0 is the exact pixel position.
+void sampleOffset(int k, double& dx, double& dy);
+
+}  // namespace meshtrace

@@ -1,0 +1,67 @@
+#pragma once
+// Error against run time: `raytrace --report DIR SCENE...` renders each scene
+// under a set of configurations (progressive coarse passes, samples per
+// pixel, single or double precision, triangle algorithm, acceleration),
+// times each, measures its error against a reference, and writes
+// DIR/report.md, DIR/report.csv and one PNG plot of error against time per
+// scene.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "meshtrace/accel/intersector.h"
+#include "meshtrace/io/image.h"
+
+namespace meshtrace {
+
+struct ReportConfig {
+  std::string group;  // "progressive", "samples", "precision", "triangle", "accel"
+  std::string name;
+  TraceOptions trace;
+  int step = 1;     // > 1: a coarse pass, one traced pixel per step x step block
+  int samples = 1;  // samples per pixel (sample 0 at the exact pixel position)
+};
+
+struct ReportRow {
+  ReportConfig config;
+  double seconds = 0.0;
+  double rmse = 0.0, psnr = 0.0;  // against the reference, 8-bit units
+  double hitDiffers = 0.0;        // share of pixels whose primary hit differs
+  double maxNormalDegrees = 0.0;  // worst shading-normal angle on the same primitive
+};
+
+struct SceneReport {
+  std::filesystem::path scene;
+  std::string reference;        // what the errors are measured against
+  double jpegNoiseRmse = 0.0;   // "within JPEG noise" threshold
+  std::vector<ReportRow> rows;
+  std::vector<std::string> leftOut;
+};
+
+// The configurations run for `scene`; brute force is left out (with the
+// reason added to `leftOut`) when it would trace more than `maxBruteForceTests`
+// triangle tests for primary rays alone.
+std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::string>& leftOut,
+                                        double maxBruteForceTests = 4e9);
+
+// The image of a configuration: coarse passes upsampled by repeating the
+// traced pixel over its block; several samples averaged.
+Image renderConfig(const Scene& scene, const ReportConfig& config, int threads = 0);
+
+// The seed's expected image for a scene at <dir>/../../expected_results/<stem>.jpg
+// (the seed layout) or our own at <dir>/../expected_results/<stem>.png, if it
+// exists with the scene's size.
+std::filesystem::path findReferenceImage(const Scene& scene);
+
+SceneReport measureScene(const Scene& scene, int threads = 0);
+
+// Writes report.md, report.csv and plot_<scene>.png into `dir`; `stability`
+// is the markdown table of stability.h, included verbatim.
+void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
+                 const std::string& stability);
+
+// A log-log scatter plot of RMSE (+ 0.01) against seconds, one colour per
+// configuration group, with decade ticks labelled by a built-in digit font.
+Image plotErrorAgainstTime(const SceneReport& report, int width = 640, int height = 420);
+
+}  // namespace meshtrace

@@ -1,0 +1,98 @@
+#pragma once
+// The two-level acceleration structure of a scene: one BVH over the
+// triangles of every mesh large enough to profit from one, and a top-level
+// BVH over all bounded objects (spheres, cylinders, smaller meshes and that
+// triangle BVH), so that 1,600 spheres cost about what one mesh does.
+// Infinite planes have no box and are tested apart.
+//
+// The meshes share one triangle BVH rather than having one each: a ray
+// crossing several meshes then descends a single hierarchy, where the hit in
+// the nearer mesh culls the farther one's boxes at every level. Primary rays
+// on one thread against rtcIntersect1, median of five alternating runs:
+// rings (two interlocked meshes) 0.56x -> 0.63x, toon_faces (six meshes)
+// 0.64x -> 0.69x; single-mesh scenes unchanged (BENCHMARKS.md).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "accel/bvh8.h"
+#include "accel/traverse.h"
+#include "accel/traverse_packet.h"
+#include "accel/triangle_block.h"
+#include "accel/triangle_set.h"
+#include "meshtrace/accel/bvh_stats.h"
+#include "meshtrace/accel/trace_options.h"
+#include "meshtrace/geometry/scene.h"
+#include "meshtrace/util/counters.h"
+
+namespace meshtrace {
+
+class ClosestHit;
+class PrimitiveQuery;
+
+// The BVH over the triangles of a set of meshes: 8-wide nodes whose leaves
+// are triangle blocks.
+struct MeshBvh {
+  TriangleSet triangles;  // what a block lane's id refers to
+  Bvh8 tree;              // a leaf's `first` is its block index
+  BuildVector<TriangleBlock4> blocks;
+  BlockFrame frame;
+  bool prefetch = false;  // whether traversals fetch children ahead
+
+  bool empty() const { return blocks.empty(); }
+  std::size_t bytes() const {
+    return tree.nodes.size() * sizeof(Bvh8Node) + blocks.size() * sizeof(TriangleBlock4);
+  }
+};
+
+class SceneBvh {
+ public:
+  SceneBvh(const Scene& scene, const SceneBvhOptions& options = {});
+
+  // Offers every primitive the ray may hit to `closest` (see primitive_query.h).
+  void closestHit(const PrimitiveQuery& query, ClosestHit& closest, Counters& counters) const;
+  // closestHit for the rays of a packet named in `active` (bit r:
+  // queries[r], offering to closest[r]); the same hits as a closestHit call
+  // for each. The queries of inactive rays are still read (give them any
+  // ray, best one of an active ray's octant).
+  void closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest, std::uint32_t active,
+                        Counters& counters) const;
+  // True if some primitive is hit at tMin < t < tMax.
+  bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
+
+  // occluded for the rays of a packet named in `active` (bit r: queries[r],
+  // limit tMax[r]); returns those blocked. The queries of inactive rays are
+  // still read (give them any ray). The same answers as occluded gives.
+  std::uint32_t occludedPacket(const PrimitiveQuery* queries, const double* tMax,
+                               std::uint32_t active, Counters& counters) const;
+
+  const SceneBvhStats& stats() const { return stats_; }
+  // The triangle BVH, over the meshes large enough for one.
+  const MeshBvh& meshBvh() const { return meshBvh_; }
+  // Whether mesh `i`'s triangles are in it (else the mesh is too small).
+  bool inMeshBvh(std::size_t i) const { return inMeshBvh_[i]; }
+  const Bvh8& topLevel() const { return top_; }
+
+ private:
+  SlabRay slabRay(const PrimitiveQuery& query) const;
+  // closestHit with the query's slab ray already made.
+  void closestHit(const PrimitiveQuery& query, const SlabRay& ray, ClosestHit& closest,
+                  Counters& counters) const;
+
+  struct Object {
+    ObjectKind kind;
+    std::uint32_t index;  // kMeshBvh for the triangle BVH (kind Mesh)
+  };
+  static constexpr std::uint32_t kMeshBvh = 0xffffffffu;
+
+  const Scene& scene_;
+  MeshBvh meshBvh_;
+  std::vector<bool> inMeshBvh_;
+  std::vector<Object> objects_;  // top-level primitives
+  Bvh8 top_;
+  double sceneScale_ = 0.0;  // largest coordinate of a bounded object
+  SceneBvhStats stats_;
+};
+
+}  // namespace meshtrace

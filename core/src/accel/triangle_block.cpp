@@ -1,0 +1,111 @@
+// Building the triangle blocks of the triangle BVH and preparing a ray for them.
+#include "accel/triangle_block.h"
+
+#include <tbb/parallel_for.h>
+
+#include <bit>
+#include <cmath>
+
+#include "accel/triangle_set.h"
+#include "meshtrace/geometry/mesh.h"
+
+namespace meshtrace {
+
+BlockFrame blockFrame(const Aabb& box) {
+  BlockFrame frame;
+  if (box.empty()) return frame;
+  frame.center = box.center();
+  const double half = 0.5 * maxComponent(box.extent());
+  // A power of two putting `half` in [0.5, 1): local coordinates are then
+  // within [-1, 1] (a hair more after rounding, which the bounds allow for).
+  frame.scale = half > 0.0 ? std::ldexp(1.0, -std::ilogb(half) - 1) : 1.0;
+  frame.worldSize = maxAbsComponent(frame.center) + half;
+  return frame;
+}
+
+BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+                                               const BlockFrame& frame, Bvh8& tree) {
+  struct Leaf {
+    std::uint32_t first, count;
+  };
+  std::vector<Leaf> leaves;
+  if (tree.nodes.empty()) {
+    if (tree.rootCount > 0) leaves.push_back({0, tree.rootCount});
+  } else {
+    for (Bvh8Node& node : tree.nodes)
+      for (int i = 0; i < kBvhWidth; ++i) {
+        if (node.count[i] == 0) continue;
+        leaves.push_back({node.first[i], node.count[i]});
+        node.first[i] = static_cast<std::uint32_t>(leaves.size() - 1);
+      }
+  }
+  BuildVector<TriangleBlock4> blocks(leaves.size());  // every block is assigned below
+  const auto local = [&](const Vec3& p) { return (p - frame.center) * frame.scale; };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        TriangleBlock4& b = blocks[k];
+                        b = {};
+                        for (int lane = 0; lane < 4; ++lane) {
+                          if (static_cast<std::uint32_t>(lane) >= leaves[k].count) {
+                            b.id[lane] = kNoTriangle;
+                            continue;
+                          }
+                          const std::uint32_t t = tree.order[leaves[k].first + lane];
+                          const TriangleSet::Member member = triangles[t];
+                          const auto& v = member.mesh->vertices();
+                          const TriangleIndices& idx = member.indices();
+                          const Vec3 a = local(v[idx[0]]);
+                          const Vec3 e1 = (v[idx[1]] - v[idx[0]]) * frame.scale;
+                          const Vec3 e2 = (v[idx[2]] - v[idx[0]]) * frame.scale;
+                          for (int axis = 0; axis < 3; ++axis) {
+                            b.v0[axis][lane] = static_cast<float>(a[axis]);
+                            b.e1[axis][lane] = static_cast<float>(e1[axis]);
+                            b.e2[axis][lane] = static_cast<float>(e2[axis]);
+                          }
+                          b.id[lane] = t;
+                        }
+                      }
+                    });
+  tree.order.clear();
+  tree.order.shrink_to_fit();
+  return blocks;
+}
+
+// The filter's error bounds are in local lengths, as multiples of float's
+// u = 2^-24:
+// - originError bounds the error of s = o' - v0 in float: the roundings of
+//   o' (u |o'|), of v0 (u, as |v0| <= 1) and of the subtraction
+//   (u (|o'| + 1)), plus the kernel's.
+// - kernelError is how far the exact kernel's own arithmetic may move the
+//   vertices and the origin, in world terms k u_kernel (|o| + |v|), scaled to
+//   local lengths; the filter treats it as extra input error. k = 2^10 for
+//   double kernels is far above their few roundings; single-precision
+//   kernels round the world coordinates to float, so their k is 32 u_float
+//   and the filter then passes almost everything on to them.
+BlockRay::BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel) {
+  const Vec3 o = (ray.origin - frame.center) * frame.scale;
+  const double dSize = maxAbsComponent(ray.direction);
+  const double oSize = maxAbsComponent(o);
+  const double world = (maxAbsComponent(ray.origin) + frame.worldSize) * frame.scale;
+  const double kernelError =
+      kernel.precision == Precision::Double ? 0x1p10 * 0x1p-53 * world : 32 * 0x1p-24 * world;
+  // d' = d / 2^k has its largest component in [1, 2): t' = t 2^k scale.
+  // The power of two is read off dSize's exponent bits (ldexp is a call).
+  const auto exponent = (std::bit_cast<std::uint64_t>(dSize) >> 52) & 0x7ff;
+  filter_ = exponent != 0 && exponent != 0x7ff && oSize < 0x1p40 && kernelError < 0x1p20;
+  if (!filter_) return;
+  const double twoToK = std::bit_cast<double>(exponent << 52);
+  const double twoToMinusK = std::bit_cast<double>((2046 - exponent) << 52);
+  for (int a = 0; a < 3; ++a) {
+    origin_[a] = _mm_set1_ps(static_cast<float>(o[a]));
+    direction_[a] = _mm_set1_ps(static_cast<float>(ray.direction[a] * twoToMinusK));
+  }
+  tScale_ = frame.scale * twoToK;
+  const double up = 1.0 + 0x1p-20;
+  directionSize_ = static_cast<float>(dSize * twoToMinusK * up);
+  kernelError_ = static_cast<float>(kernelError * up);
+  originError_ = static_cast<float>((0x1p-24 * (2 * oSize + 3) + kernelError) * up);
+}
+
+}  // namespace meshtrace

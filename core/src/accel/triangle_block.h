@@ -1,0 +1,155 @@
+#pragma once
+// The triangles of one BVH leaf, up to four, stored together in float for a
+// single SSE test of all four against a ray (Cramer's rule on the
+// barycentric system, written with triple products as Moller-Trumbore does).
+//
+// That test is a conservative filter, not the answer: it rejects a triangle
+// only when its error bound proves that the exact kernel (triangle.h) would
+// reject it too; every other triangle goes on to the exact kernel, which
+// alone decides hits and their t. So the triangle BVH finds exactly what brute
+// force finds, while most triangles cost a quarter of one float test.
+#include <emmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "accel/bvh8.h"
+#include "meshtrace/geometry/triangle.h"
+#include "meshtrace/util/math.h"
+#include "util/build_vector.h"
+
+namespace meshtrace {
+
+class TriangleSet;
+
+// Coordinates are stored relative to the triangles' box centre and scaled by
+// a power of two so the box fits in [-1, 1]^3: float then keeps its full
+// relative precision however far the meshes are from the world origin, and
+// the scaling itself is exact.
+struct BlockFrame {
+  Vec3 center{0.0};
+  double scale = 1.0;      // local = (world - center) * scale
+  double worldSize = 0.0;  // |center| + half extent, largest component
+};
+
+// 160 bytes. Unused lanes have id kNoTriangle and are never reported.
+struct alignas(16) TriangleBlock4 {
+  float v0[3][4];  // [axis][lane], local coordinates
+  float e1[3][4];  // v1 - v0 and v2 - v0, each rounded once from double
+  float e2[3][4];
+  std::uint32_t id[4];  // triangle id in the TriangleSet the blocks were made from
+};
+static_assert(sizeof(TriangleBlock4) == 160);
+inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
+// Replaces each leaf of `tree` (at most four triangles of `triangles`, from
+// tree.order) by one block: afterwards a leaf's `first` is its block index,
+// and tree.order is released. A lane's id is its triangle's id in the set.
+BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
+                                               const BlockFrame& frame, Bvh8& tree);
+// The frame that fits `box` (the set's bounds) in [-1, 1]^3.
+BlockFrame blockFrame(const Aabb& box);
+
+// One ray prepared for the blocks made in one frame.
+class BlockRay {
+ public:
+  BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel);
+
+  // Bit i set if lane i of `block` may hold a hit at tMin <= t <= tMax
+  // (world distances) for the exact kernel; lanes past `count` are clear.
+  int candidates(const TriangleBlock4& block, int count, double tMin, double tMax) const;
+
+ private:
+  __m128 origin_[3], direction_[3];
+  float originError_ = 0.0f;    // bound on the error of o' - v0 (see the .cpp)
+  float kernelError_ = 0.0f;    // the exact kernel's own input error, as a length
+  float directionSize_ = 0.0f;  // largest |d'| component, rounded up
+  double tScale_ = 1.0;         // local t = world t * tScale_
+  bool filter_ = true;          // false: every lane is a candidate (absurd magnitudes)
+};
+
+// Cramer's rule in triple products: with s = o - v0, p = d x e2, q = s x e1,
+//   det = e1.p,  beta det = s.p,  gamma det = d.q,  t det = e2.q.
+// Each computed triple product x.(y x z) is within
+//   m = 2 * 6 (dx Y Z + X dy Z + X Y dz + 5u X Y Z)
+// of the exact one, where X, Y, Z bound the components and dx, dy, dz their
+// input errors (six products, five roundings deep; the factor 2 covers the
+// second-order terms and the rounding of m itself). A lane is dropped only
+// if, with every quantity moved by its m against it, it still fails a
+// condition: so a triangle the exact kernel accepts is never dropped.
+inline int BlockRay::candidates(const TriangleBlock4& b, int count, double tMin,
+                                double tMax) const {
+  const int valid = (1 << count) - 1;
+  if (!filter_) return valid;
+  constexpr float u = 0x1p-24f;
+  const __m128 signBit = _mm_set1_ps(-0.0f);
+  const auto abs = [&](__m128 x) { return _mm_andnot_ps(signBit, x); };
+  const auto mul = [](__m128 x, __m128 y) { return _mm_mul_ps(x, y); };
+  const auto add = [](__m128 x, __m128 y) { return _mm_add_ps(x, y); };
+  const auto sub = [](__m128 x, __m128 y) { return _mm_sub_ps(x, y); };
+  const auto splat = [](float x) { return _mm_set1_ps(x); };
+
+  __m128 s[3], e1[3], e2[3];
+  for (int a = 0; a < 3; ++a) {
+    s[a] = sub(origin_[a], _mm_load_ps(b.v0[a]));
+    e1[a] = _mm_load_ps(b.e1[a]);
+    e2[a] = _mm_load_ps(b.e2[a]);
+  }
+  const __m128* d = direction_;
+  const __m128 p0 = sub(mul(d[1], e2[2]), mul(d[2], e2[1]));
+  const __m128 p1 = sub(mul(d[2], e2[0]), mul(d[0], e2[2]));
+  const __m128 p2 = sub(mul(d[0], e2[1]), mul(d[1], e2[0]));
+  const __m128 q0 = sub(mul(s[1], e1[2]), mul(s[2], e1[1]));
+  const __m128 q1 = sub(mul(s[2], e1[0]), mul(s[0], e1[2]));
+  const __m128 q2 = sub(mul(s[0], e1[1]), mul(s[1], e1[0]));
+  const __m128 det = add(add(mul(e1[0], p0), mul(e1[1], p1)), mul(e1[2], p2));
+  const __m128 bet = add(add(mul(s[0], p0), mul(s[1], p1)), mul(s[2], p2));
+  const __m128 gam = add(add(mul(d[0], q0), mul(d[1], q1)), mul(d[2], q2));
+  const __m128 tee = add(add(mul(e2[0], q0), mul(e2[1], q1)), mul(e2[2], q2));
+
+  // Bounds: S on s (plus its error dS), E on the edges (plus dE), D on d
+  // (its error, 4u D, is folded into the 9u terms).
+  const __m128 sMax = _mm_max_ps(_mm_max_ps(abs(s[0]), abs(s[1])), abs(s[2]));
+  __m128 eMax = _mm_max_ps(_mm_max_ps(abs(e1[0]), abs(e1[1])), abs(e1[2]));
+  eMax = _mm_max_ps(eMax, _mm_max_ps(_mm_max_ps(abs(e2[0]), abs(e2[1])), abs(e2[2])));
+  const __m128 dS = splat(originError_);
+  const __m128 dE = add(mul(splat(u), eMax), splat(kernelError_));
+  const __m128 sB = add(sMax, dS), eB = add(eMax, dE), dB = splat(directionSize_);
+  const __m128 twelve = splat(12.0f), floor = splat(0x1p-120f);
+  const __m128 nineU = splat(9 * u);
+  // beta det and gamma det: x = s, y = d, z = e (or y = s, z = e1: the same
+  // bounds).
+  const __m128 mBary =
+      add(mul(mul(twelve, dB), add(mul(dS, eB), mul(sB, add(mul(nineU, eB), dE)))), floor);
+  // det: x = e1, y = d, z = e2.
+  const __m128 mDet = add(mul(mul(mul(twelve, dB), eB), add(add(dE, dE), mul(nineU, eB))), floor);
+  // t det: x = e2, y = s, z = e1.
+  const __m128 mT = add(mul(mul(twelve, eB), add(add(mul(add(dE, dE), sB), mul(dS, eB)),
+                                                 mul(mul(splat(5 * u), sB), eB))),
+                        floor);
+
+  // Flip signs so that det > 0.
+  const __m128 detSign = _mm_and_ps(det, signBit);
+  const __m128 absDet = abs(det);
+  const __m128 betS = _mm_xor_ps(bet, detSign), gamS = _mm_xor_ps(gam, detSign);
+  const __m128 teeS = _mm_xor_ps(tee, detSign);
+  const __m128 undecided = _mm_cmple_ps(absDet, mDet);
+  const __m128 negBary = _mm_xor_ps(mBary, signBit);
+  __m128 inside = _mm_and_ps(_mm_cmpge_ps(betS, negBary), _mm_cmpge_ps(gamS, negBary));
+  inside =
+      _mm_and_ps(inside, _mm_cmple_ps(add(betS, gamS), add(add(absDet, add(mBary, mBary)), mDet)));
+  // tMin' det - m <= t det <= tMax' det + m, with t' rounded outward.
+  const float far = std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
+  const __m128 farV = splat(far);
+  inside = _mm_and_ps(inside, _mm_cmple_ps(teeS, add(add(mul(farV, absDet), mT), mul(farV, mDet))));
+  if (tMin > 0) {
+    const __m128 nearV = splat(static_cast<float>(tMin * tScale_ * (1 - 0x1p-20)));
+    inside =
+        _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));
+  }
+  return _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+}
+
+}  // namespace meshtrace

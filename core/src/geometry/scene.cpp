@@ -1,0 +1,48 @@
+#include "meshtrace/geometry/scene.h"
+
+namespace meshtrace {
+
+const char* toString(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::Sphere: return "sphere";
+    case ObjectKind::Plane: return "plane";
+    case ObjectKind::Cylinder: return "cylinder";
+    case ObjectKind::Mesh: return "mesh";
+  }
+  return "?";
+}
+
+std::size_t Scene::triangleCount() const {
+  std::size_t n = 0;
+  for (const Mesh& m : meshes) n += m.triangles().size();
+  return n;
+}
+
+const Material& Scene::material(const PrimitiveRef& ref) const {
+  switch (ref.kind) {
+    case ObjectKind::Sphere: return spheres[ref.object].material;
+    case ObjectKind::Plane: return planes[ref.object].material;
+    case ObjectKind::Cylinder: return cylinders[ref.object].material;
+    case ObjectKind::Mesh: break;
+  }
+  return meshes[ref.object].material();
+}
+
+bool Scene::hasMirrors() const {
+  const auto mirrored = [](const auto& objects) {
+    for (const auto& o : objects)
+      if (o.material.mirror > 0.0) return true;
+    return false;
+  };
+  for (const Mesh& m : meshes)
+    if (m.material().mirror > 0.0) return true;
+  return mirrored(spheres) || mirrored(planes) || mirrored(cylinders);
+}
+
+bool Scene::hasPhongMeshes() const {
+  for (const Mesh& m : meshes)
+    if (m.shading() == Shading::Phong) return true;
+  return false;
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,251 @@
+#include "meshtrace/render/progressive.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "render/progressive_job.h"
+
+namespace meshtrace {
+
+namespace {
+using progressive_detail::Clock;
+using progressive_detail::msBetween;
+}  // namespace
+
+void sampleOffset(int k, double& dx, double& dy) {
+  // R2 sequence (Roberts 2018): frac(0.5 + k * (1/phi2, 1/phi2^2)).
+  constexpr double a1 = 0.7548776662466927, a2 = 0.5698402909980532;
+  dx = std::fmod(0.5 + k * a1, 1.0) - 0.5;
+  dy = std::fmod(0.5 + k * a2, 1.0) - 0.5;
+}
+
+PreparedScene::PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options)
+    : scene_(std::move(scene)), options_(options) {}
+
+PreparedScene::~PreparedScene() = default;
+
+const SceneIntersector& PreparedScene::intersector() const {
+  std::call_once(built_,
+                 [&] { intersector_ = std::make_unique<SceneIntersector>(*scene_, options_); });
+  return *intersector_;
+}
+
+std::optional<std::size_t> ProgressiveFrame::cornerOf(int col, int row) const {
+  if (col < 0 || row < 0 || col >= width || row >= height) return std::nullopt;
+  const int step = tileStep[(row / tileSize) * tilesX + col / tileSize];
+  if (step == 0) return std::nullopt;
+  return static_cast<std::size_t>(row - row % step) * width + (col - col % step);
+}
+
+const PixelProbe* ProgressiveFrame::probeAt(int col, int row) const {
+  const auto i = probes.empty() ? std::nullopt : cornerOf(col, row);
+  return i ? &probes[*i] : nullptr;
+}
+
+const std::uint8_t* ProgressiveFrame::rgbaAt(int col, int row) const {
+  const auto i = rgba.empty() ? std::nullopt : cornerOf(col, row);
+  return i ? &rgba[*i * 4] : nullptr;
+}
+
+ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> workerStart,
+                                         std::function<void(const PassFinished&)> passFinished)
+    : passFinished_(std::move(passFinished)), pool_(std::make_shared<BufferPool>()) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (int i = 0; i < threads; ++i)
+    workers_.emplace_back([this, workerStart, i] {
+      if (workerStart) workerStart();
+      workerLoop(i);
+    });
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    if (current_) current_->cancelled = true;
+  }
+  wake_.notify_all();
+  resumeCancelled();
+  for (std::thread& w : workers_) w.join();
+}
+
+std::uint64_t ProgressiveRenderer::start(std::shared_ptr<const PreparedScene> scene,
+                                         const Camera& camera,
+                                         const ProgressiveSettings& settings) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (current_) current_->cancelled = true;
+  ++generation_;
+  current_ = std::make_shared<Job>(generation_, std::move(scene), camera, settings, pool_);
+  wake_.notify_all();
+  resumeCancelled();
+  return generation_;
+}
+
+void ProgressiveRenderer::cancel() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (current_) current_->cancelled = true;
+    current_.reset();
+  }
+  resumeCancelled();
+}
+
+void ProgressiveRenderer::pauseWorkers(int count) {
+  {
+    std::lock_guard<std::mutex> lock(pauseMutex_);
+    paused_.store(count, std::memory_order_relaxed);
+  }
+  resumed_.notify_all();
+}
+
+void ProgressiveRenderer::resumeCancelled() {
+  // Taking the lock orders the cancellation before a paused worker's check.
+  { std::lock_guard<std::mutex> lock(pauseMutex_); }
+  resumed_.notify_all();
+}
+
+bool ProgressiveRenderer::mayGoOn(const Job& job, int worker) {
+  if (worker < paused_.load(std::memory_order_relaxed) && waitingForWork_.load() == 0) {
+    std::unique_lock<std::mutex> lock(pauseMutex_);
+    resumed_.wait(lock, [&] {
+      return worker >= paused_.load(std::memory_order_relaxed) || waitingForWork_.load() > 0 ||
+             job.cancelled.load();
+    });
+  }
+  return !job.cancelled.load(std::memory_order_relaxed);
+}
+
+bool ProgressiveRenderer::waitFor(const Job& job, const std::function<bool()>& done) {
+  if (done()) return true;
+  // A worker still at it may be paused: it goes on while anyone waits.
+  {
+    std::lock_guard<std::mutex> lock(pauseMutex_);
+    ++waitingForWork_;
+  }
+  resumed_.notify_all();
+  bool ready = true;
+  while (!done()) {
+    if (job.cancelled.load(std::memory_order_relaxed)) {
+      ready = false;
+      break;
+    }
+    std::this_thread::yield();
+  }
+  --waitingForWork_;
+  return ready;
+}
+
+void ProgressiveRenderer::workerLoop(int worker) {
+  std::uint64_t seen = 0;
+  for (;;) {
+    std::shared_ptr<Job> job;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || (current_ && generation_ != seen); });
+      if (stopping_) return;
+      job = current_;
+      seen = generation_;
+    }
+    std::call_once(job->built, [&] { job->prepare(); });
+    for (int item = job->nextItem++; item < job->itemCount; item = job->nextItem++) {
+      const auto tileReady = [&](int t, int pass) {
+        return waitFor(*job, [&] { return job->tilePasses[t].load() >= pass; });
+      };
+      const auto goOn = [&] {
+        if (worker < paused_.load(std::memory_order_relaxed)) return mayGoOn(*job, worker);
+        return !job->cancelled.load(std::memory_order_relaxed);
+      };
+      if (!job->run(item, tileReady, goOn, passFinished_)) break;
+    }
+    // The last items may be held by paused workers: they finish them now.
+    if (paused_.load() > 0) waitFor(*job, [&] { return job->finished(); });
+  }
+}
+
+ProgressiveStatus ProgressiveRenderer::status() const {
+  std::shared_ptr<Job> job;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    job = current_;
+  }
+  ProgressiveStatus s;
+  if (!job) return s;
+  s.job = job->id;
+  s.passCount = job->passCount;
+  int done = 0;
+  while (done < job->passCount && job->passTiles[done].load() == job->tileCount) ++done;
+  s.passesDone = done;
+  const double pixels = double(job->width) * job->height;
+  s.exactFraction = pixels > 0 ? double(job->exactPixelsDone.load()) / pixels : 1.0;
+  s.coarseDone = done >= 1;
+  s.exactDone = done >= job->levelCount();
+  s.finished = job->finished();
+  s.running = !s.finished;
+  s.samplesPerPixel = s.exactDone ? 1 + (done - job->levelCount()) : 0;
+  std::lock_guard<std::mutex> lock(job->statsMutex);
+  s.firstCoarseMs = job->firstCoarseMs;
+  s.exactMs = job->exactMs;
+  s.finishedMs = job->finishedMs;
+  s.elapsedMs =
+      s.finished && job->finishedMs >= 0 ? job->finishedMs : msBetween(job->start, Clock::now());
+  s.counters = job->counters;
+  return s;
+}
+
+std::vector<int> ProgressiveRenderer::update(ProgressiveFrame& frame) const {
+  std::shared_ptr<Job> job;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    job = current_;
+  }
+  std::vector<int> changed;
+  if (!job) return changed;
+  if (frame.job != job->id) {
+    const std::size_t pixels = static_cast<std::size_t>(job->width) * job->height;
+    frame.job = job->id;
+    frame.width = job->width;
+    frame.height = job->height;
+    frame.tileSize = job->tile;
+    frame.tilesX = job->tilesX;
+    frame.tilesY = job->tilesY;
+    frame.rgba.resize(job->settings.color ? pixels * 4 : 0);
+    frame.probes = {};
+    frame.probeStorage.reset();
+    frame.tileStep.assign(job->tileCount, 0);
+    frame.tileVersion.assign(job->tileCount, 0);
+  }
+  for (int t = 0; t < job->tileCount; ++t) {
+    if (frame.tileVersion[t] == job->tileVersion[t].load(std::memory_order_acquire)) continue;
+    std::lock_guard<std::mutex> lock(job->tileLock(t));
+    frame.tileVersion[t] = job->tileVersion[t].load(std::memory_order_relaxed);
+    frame.tileStep[t] = job->tileStep[t];
+    changed.push_back(t);
+    if (job->settings.probes && !frame.probeStorage) {
+      // Published probes never change again: the frame reads the job's.
+      frame.probeStorage = job->buffers;
+      frame.probes = job->buffers->probes;
+    }
+    if (frame.rgba.empty()) continue;
+    const int c0 = (t % job->tilesX) * job->tile, r0 = (t / job->tilesX) * job->tile;
+    const int c1 = std::min(c0 + job->tile, job->width);
+    const int r1 = std::min(r0 + job->tile, job->height);
+    const std::vector<std::uint8_t>& rgba = job->buffers->rgba;
+    for (int r = r0; r < r1; ++r) {
+      const std::size_t a = job->index(c0, r), b = job->index(c1, r);
+      std::copy(rgba.begin() + a * 4, rgba.begin() + b * 4, frame.rgba.begin() + a * 4);
+    }
+  }
+  return changed;
+}
+
+bool ProgressiveRenderer::waitUntilFinished(double timeoutMs) const {
+  const auto start = Clock::now();
+  for (;;) {
+    const ProgressiveStatus s = status();
+    if (s.job == 0 || s.finished) return true;
+    if (msBetween(start, Clock::now()) > timeoutMs) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,112 @@
+#include "meshtrace/render/render.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+#include "meshtrace/render/integrator.h"
+
+namespace meshtrace {
+
+namespace {
+// Runs tile(rows, cols, counters) over a grid of `height` rows and `width`
+// columns in tiles of `grain` x `grain`, spread over `threads` workers (0:
+// all cores).
+template <typename Tile>
+Counters forEachTile(int width, int height, int grain, int threads, const Tile& tile) {
+  tbb::combinable<Counters> perThread;
+  const auto run = [&] {
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(0, height, grain, 0, width, grain),
+        [&](const tbb::blocked_range2d<int>& r) { tile(r.rows(), r.cols(), perThread.local()); });
+  };
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute(run);
+  } else {
+    run();
+  }
+  Counters total;
+  perThread.combine_each([&](const Counters& c) { total += c; });
+  return total;
+}
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options, Counters* counters) {
+  return render(SceneIntersector(scene, options.trace), options.threads, counters);
+}
+
+Image render(const SceneIntersector& intersector, int threads, Counters* counters) {
+  const Scene& scene = intersector.scene();
+  const Integrator integrator(intersector);
+  Image image(scene.camera.width(), scene.camera.height());
+  const int width = image.width, height = image.height;
+  // Pixels go in 2x2 quads whose primary rays are traced together
+  // (Integrator::quad), in tiles of 8x8 quads. The quads sit on even
+  // storage rows and columns whatever the tiling, so the work done does not
+  // depend on the thread count; a quad cut by the image's edge goes pixel
+  // by pixel. Storage row `row` is y = height - 1 - row (y = 0 at the
+  // bottom).
+  const auto tile = [&](const tbb::blocked_range<int>& quadRows,
+                        const tbb::blocked_range<int>& quadCols, Counters& c) {
+    for (int qr = quadRows.begin(); qr < quadRows.end(); ++qr)
+      for (int qc = quadCols.begin(); qc < quadCols.end(); ++qc) {
+        const int row = 2 * qr, x = 2 * qc;
+        if (row + 1 < height && x + 1 < width) {
+          Color quad[kPacketSize];
+          integrator.quad(x, height - 2 - row, quad, c);
+          image.at(x, row + 1) = quad[0];
+          image.at(x + 1, row + 1) = quad[1];
+          image.at(x, row) = quad[2];
+          image.at(x + 1, row) = quad[3];
+          continue;
+        }
+        for (int r = row; r < std::min(row + 2, height); ++r)
+          for (int px = x; px < std::min(x + 2, width); ++px)
+            image.at(px, r) = integrator.pixel(px, height - 1 - r, c);
+      }
+  };
+  const Counters total = forEachTile((width + 1) / 2, (height + 1) / 2, 8, threads, tile);
+  if (counters) *counters += total;
+  return image;
+}
+
+int boxHitCount(const Scene& scene, const Ray& ray) {
+  const RayInverse inverse(ray);
+  int n = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    double tEnter, tExit;
+    n += intersectSlabs(mesh.bounds(), inverse, 0.0, kInfinity, tEnter, tExit);
+  }
+  return n;
+}
+
+BoxHitCounts countBoxHits(const Scene& scene, int threads) {
+  BoxHitCounts out;
+  out.width = scene.camera.width();
+  out.height = scene.camera.height();
+  out.counts.assign(static_cast<std::size_t>(out.width) * out.height, 0);
+  forEachTile(
+      out.width, out.height, 16, threads,
+      [&](const tbb::blocked_range<int>& rows, const tbb::blocked_range<int>& cols, Counters&) {
+        for (int row = rows.begin(); row < rows.end(); ++row)
+          for (int x = cols.begin(); x < cols.end(); ++x)
+            out.counts[static_cast<std::size_t>(row) * out.width + x] =
+                boxHitCount(scene, scene.camera.primaryRay(x, out.height - 1 - row));
+      });
+  for (int n : out.counts) out.maxCount = std::max(out.maxCount, n);
+  return out;
+}
+
+Image debugAabbImage(const BoxHitCounts& counts) {
+  Image image(counts.width, counts.height);
+  if (counts.maxCount == 0) return image;
+  for (std::size_t i = 0; i < counts.counts.size(); ++i)
+    image.pixels[i] = Color(double(counts.counts[i]) / counts.maxCount, 0.0, 0.0);
+  return image;
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,163 @@
+#pragma once
+// The Whitted shading recursion, written once. The Integrator runs it with
+// NoObserver, whose hooks inline to nothing; the pixel inspector runs it with
+// an observer that records every step, so what it explains is exactly what
+// was rendered.
+#include <cstddef>
+
+#include "meshtrace/accel/intersector.h"
+#include "meshtrace/render/spawn.h"
+#include "meshtrace/render/surface.h"
+
+namespace meshtrace {
+
+struct NoObserver {
+  void beginBounce(int /*level*/, const Ray&) {}
+  void surface(const Hit&, const SurfacePoint&) {}
+  void ambient(const Color&) {}
+  void lightBehind(std::size_t /*light*/, const Vec3& /*l*/, double /*nl*/) {}
+  // The shadow ray from sp toward the light (shadowRayToward) reached
+  // something first.
+  void lightShadowed(std::size_t, const Vec3&, double, const SurfacePoint& /*sp*/) {}
+  void lightLit(std::size_t, const Vec3&, double, const Color& /*diffuse*/,
+                const Color& /*specular*/) {}
+  void local(const Color&, double /*mirror*/, bool /*reflects*/) {}
+  void endBounce(const Color&) {}
+};
+
+// The direction l to `light` from sp and its cosine nl with the normal.
+// Returns nl > 0: a light behind the surface adds nothing, so its shadow ray
+// is left out.
+inline bool lightToward(const Light& light, const SurfacePoint& sp, Vec3& l, double& nl) {
+  l = glm::normalize(light.position - sp.point);
+  nl = glm::dot(sp.normal, l);
+  return nl > 0.0;
+}
+
+// The shadow ray from sp in the light's direction l (lightToward), and the
+// light's distance from that ray's origin: a blocker near the light counts
+// as much as one near the point.
+inline Ray shadowRayToward(const Light& light, const SurfacePoint& sp, const Vec3& l,
+                           double& lightDistance) {
+  const Ray shadow{spawnOrigin(sp, l), l};
+  lightDistance = glm::length(light.position - shadow.origin);
+  return shadow;
+}
+
+// Ambient plus, per light, diffuse and specular unless the light is behind
+// the surface or shadowed: shadowed(i, l) tells whether the shadow ray
+// toward light i, in direction l, is blocked.
+template <typename Observer, typename Shadowed>
+Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
+                   const SurfacePoint& sp, Counters& counters, Observer& observer,
+                   const Shadowed& shadowed) {
+  const Scene& scene = intersector.scene();
+  const Material& m = *sp.material;
+  Color color = scene.ambience * m.ambient;
+  observer.ambient(color);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    Vec3 l;
+    double nl;
+    if (!lightToward(light, sp, l, nl)) {
+      observer.lightBehind(i, l, nl);
+      continue;
+    }
+    ++counters.shadowRays;
+    if (shadowed(i, l)) {
+      observer.lightShadowed(i, l, nl, sp);
+      continue;
+    }
+    const Color diffuse = light.color * m.diffuse * nl;
+    color += diffuse;
+    Color specular(0.0);
+    const Vec3 r = 2.0 * nl * sp.normal - l;
+    const double rv = glm::dot(r, viewDir);
+    if (rv > 0.0) {
+      specular = light.color * m.specular * std::pow(rv, m.shininess);
+      color += specular;
+    }
+    observer.lightLit(i, l, nl, diffuse, specular);
+  }
+  return color;
+}
+
+template <typename Observer>
+Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
+                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr);
+
+// Whether the surface at sp, reached at recursion level `level`, adds a
+// mirror reflection. The deepest level keeps its local colour rather than
+// mixing with black.
+inline bool reflectsAt(const Scene& scene, const SurfacePoint& sp, int level) {
+  return sp.material->mirror > 0.0 && level < scene.depth;
+}
+
+// The mirror reflection of `ray` at sp, leaving sp.primitive.
+inline Ray mirrorBounce(const Ray& ray, const SurfacePoint& sp) {
+  const Vec3 d = ray.direction;
+  const Vec3 reflected = d - 2.0 * glm::dot(d, sp.normal) * sp.normal;
+  return {spawnOrigin(sp, reflected), glm::normalize(reflected)};
+}
+
+// A reflecting surface's colour from its local colour and what its mirror
+// reflection sees.
+inline Color mirrorMix(const Color& local, double mirror, const Color& reflected) {
+  return (1.0 - mirror) * local + mirror * reflected;
+}
+
+// The rest of whittedTrace at the ray's hit, whose surface point is sp;
+// `shadowed` as in whittedLocal.
+template <typename Observer, typename Shadowed>
+Color whittedShadeAt(const SceneIntersector& intersector, const Ray& ray, const Hit& hit,
+                     const SurfacePoint& sp, int level, Counters& counters, Observer& observer,
+                     const Shadowed& shadowed) {
+  const Scene& scene = intersector.scene();
+  observer.surface(hit, sp);
+  const Color local = whittedLocal(intersector, -ray.direction, sp, counters, observer, shadowed);
+  const double mirror = sp.material->mirror;
+  const bool reflects = reflectsAt(scene, sp, level);
+  observer.local(local, mirror, reflects);
+  if (!reflects) {
+    observer.endBounce(local);
+    return local;
+  }
+  ++counters.reflectionRays;
+  const Color color = mirrorMix(local, mirror,
+                                whittedTrace(intersector, mirrorBounce(ray, sp), level + 1,
+                                             counters, observer, &sp.primitive));
+  observer.endBounce(color);
+  return color;
+}
+
+// The rest of whittedTrace, given the ray's closest hit (`found` false:
+// none); shadow rays are traced one by one.
+template <typename Observer>
+Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool found, const Hit& hit,
+                   int level, Counters& counters, Observer& observer) {
+  const Scene& scene = intersector.scene();
+  if (!found) {
+    observer.endBounce(scene.background);
+    return scene.background;
+  }
+  const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
+  const auto shadowed = [&](std::size_t i, const Vec3& l) {
+    double lightDistance;
+    const Ray shadow = shadowRayToward(scene.lights[i], sp, l, lightDistance);
+    return intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive);
+  };
+  return whittedShadeAt(intersector, ray, hit, sp, level, counters, observer, shadowed);
+}
+
+// Colour seen along `ray` at recursion level `level` (0 = primary); `start`
+// is the primitive a reflected ray leaves.
+template <typename Observer>
+Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
+                   Counters& counters, Observer& observer, const PrimitiveRef* start) {
+  observer.beginBounce(level, ray);
+  Hit hit;
+  const bool found = intersector.closestHit(ray, kSpawnTMin, hit, counters, start);
+  return whittedShade(intersector, ray, found, hit, level, counters, observer);
+}
+
+}  // namespace meshtrace

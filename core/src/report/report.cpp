@@ -1,0 +1,361 @@
+// raytrace --report: configurations, measurements and the written report.
+#include "meshtrace/report/report.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "meshtrace/render/integrator.h"
+#include "meshtrace/render/progressive.h"
+#include "meshtrace/render/surface.h"
+#include "meshtrace/report/image_compare.h"
+#include "meshtrace/report/left_out.h"
+
+namespace meshtrace {
+
+namespace {
+
+template <typename Body>
+void parallelRows(int height, int threads, const Body& body) {
+  const auto run = [&] { tbb::parallel_for(0, height, body); };
+  if (threads > 0) {
+    tbb::task_arena(threads).execute(run);
+  } else {
+    run();
+  }
+}
+
+// The primary hit of every storage pixel (of its block's traced pixel for a
+// coarse pass), with its shading normal.
+struct PixelHit {
+  bool found = false;
+  PrimitiveRef ref;
+  Vec3 normal{0.0};
+};
+
+std::vector<PixelHit> primaryHits(const Scene& scene, const TraceOptions& options, int step,
+                                  int threads) {
+  const SceneIntersector intersector(scene, options);
+  const int w = scene.camera.width(), h = scene.camera.height();
+  std::vector<PixelHit> out(static_cast<std::size_t>(w) * h);
+  parallelRows(h, threads, [&](int row) {
+    Counters counters;
+    for (int x = 0; x < w; ++x) {
+      const int cx = x - x % step, crow = row - row % step;  // the block's traced pixel
+      const Ray ray = scene.camera.primaryRay(cx, h - 1 - crow);
+      Hit hit;
+      PixelHit& p = out[static_cast<std::size_t>(row) * w + x];
+      if (!intersector.closestHit(ray, 0.0, hit, counters)) continue;
+      p = {true, hit.ref, surfaceAt(scene, ray, hit, options.triangle.precision).normal};
+    }
+  });
+  return out;
+}
+
+bool sameRef(const PrimitiveRef& a, const PrimitiveRef& b) {
+  return a.kind == b.kind && a.object == b.object && a.triangle == b.triangle;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string configLabel(const TraceOptions& t) {
+  return std::string(toString(t.triangle.test)) + " " + toString(t.triangle.precision) + " " +
+         toString(t.accel);
+}
+
+}  // namespace
+
+std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::string>& leftOut,
+                                        double maxBruteForceTests) {
+  const TraceOptions base;
+  std::vector<ReportConfig> out;
+  // The viewer's progressive passes, coarse to exact to anti-aliased.
+  for (int step : {16, 4, 2})
+    out.push_back({"progressive", "coarse 1/" + std::to_string(step), base, step, 1});
+  out.push_back({"progressive", "exact (default)", base, 1, 1});
+  for (int spp : {4, 16})
+    out.push_back({"samples", std::to_string(spp) + " samples/pixel", base, 1, spp});
+  for (Precision p : {Precision::Double, Precision::Single})
+    for (TriangleTest t : {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight}) {
+      TraceOptions o = base;
+      o.triangle = {t, p};
+      if (t == base.triangle.test && p == base.triangle.precision) continue;
+      out.push_back({p == Precision::Double ? "triangle" : "precision", configLabel(o), o, 1, 1});
+    }
+  const double bruteTests =
+      double(scene.triangleCount()) * scene.camera.width() * scene.camera.height();
+  for (AccelMethod a : {AccelMethod::None, AccelMethod::BoundingBox}) {
+    TraceOptions o = base;
+    o.accel = a;
+    if (a == AccelMethod::None && bruteTests > maxBruteForceTests) {
+      char why[200];
+      std::snprintf(why, sizeof why,
+                    "brute force (--accel none) not timed: %.2g triangle tests for primary rays "
+                    "alone, over the report's limit of %.2g",
+                    bruteTests, maxBruteForceTests);
+      leftOut.push_back(why);
+      continue;
+    }
+    out.push_back({"accel", configLabel(o), o, 1, 1});
+  }
+  return out;
+}
+
+Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) {
+  const SceneIntersector intersector(scene, config.trace);
+  const Integrator integrator(intersector);
+  const int w = scene.camera.width(), h = scene.camera.height(), step = config.step;
+  Image image(w, h);
+  parallelRows((h + step - 1) / step, threads, [&](int blockRow) {
+    Counters counters;
+    const int row = blockRow * step;
+    for (int x = 0; x < w; x += step) {
+      Color c(0.0);
+      for (int k = 0; k < config.samples; ++k) {
+        double dx = 0.0, dy = 0.0;
+        if (k > 0) sampleOffset(k, dx, dy);
+        c += integrator.pixel(x + dx, h - 1 - row + dy, counters);
+      }
+      c /= double(config.samples);
+      for (int r = row; r < std::min(h, row + step); ++r)
+        for (int xx = x; xx < std::min(w, x + step); ++xx) image.at(xx, r) = c;
+    }
+  });
+  return image;
+}
+
+std::filesystem::path findReferenceImage(const Scene& scene) {
+  const auto dir = scene.file.parent_path();
+  const std::string stem = scene.file.stem().string();
+  for (const auto& p : {dir / ".." / ".." / "expected_results" / (stem + ".jpg"),
+                        dir / ".." / "expected_results" / (stem + ".png")}) {
+    if (!std::filesystem::is_regular_file(p)) continue;
+    const Image8 ref = readImage(p);
+    if (ref.width == scene.camera.width() && ref.height == scene.camera.height()) return p;
+  }
+  return {};
+}
+
+SceneReport measureScene(const Scene& scene, int threads) {
+  SceneReport report;
+  report.scene = scene.file;
+  report.leftOut = leftOut(scene);
+  const SceneIntersector defaultIntersector(scene, TraceOptions{});
+  if (const SceneBvhStats* bvh = defaultIntersector.bvhStats())
+    for (const std::string& item : bvh->leftOut) report.leftOut.push_back(item);
+  const std::vector<ReportConfig> configs = reportConfigs(scene, report.leftOut);
+
+  // The reference image, and how its JPEG noise is measured.
+  const std::filesystem::path refFile = findReferenceImage(scene);
+  Image8 reference;
+  bool jpegReference = false;
+  if (!refFile.empty()) {
+    reference = readImage(refFile);
+    jpegReference = refFile.extension() == ".jpg";
+    report.reference = refFile.filename().string() + (jpegReference ? " (seed reference, JPEG)" : " (our expected image)");
+    // The conformance test's bound: our render, JPEG-encoded, within 0.6.
+    report.jpegNoiseRmse = jpegReference ? 0.6 : compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
+  } else {
+    ReportConfig high{"reference", "64 samples/pixel", TraceOptions{}, 1, 64};
+    reference = quantize(renderConfig(scene, high, threads));
+    report.reference = "our render with 64 samples/pixel (no expected image found)";
+    report.jpegNoiseRmse = compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
+  }
+
+  // Primary hits of a double-precision brute-force trace (the BVH where brute
+  // force was left out: it returns the same hits, as the BVH tests assert).
+  bool bruteCheap = false;
+  for (const ReportConfig& c : configs) bruteCheap |= c.trace.accel == AccelMethod::None;
+  TraceOptions refTrace;
+  refTrace.triangle.precision = Precision::Double;
+  if (bruteCheap) refTrace.accel = AccelMethod::None;
+  const std::vector<PixelHit> refHits = primaryHits(scene, refTrace, 1, threads);
+
+  for (const ReportConfig& c : configs) {
+    ReportRow row{c};
+    const auto start = std::chrono::steady_clock::now();
+    const Image image = renderConfig(scene, c, threads);
+    row.seconds = secondsSince(start);
+    const Image8 ours = jpegReference ? jpegRoundTrip(quantize(image), 95) : quantize(image);
+    const ImageDifference d = compareImages(ours, reference);
+    row.rmse = d.rmse;
+    row.psnr = d.psnr;
+    const std::vector<PixelHit> hits = primaryHits(scene, c.trace, c.step, threads);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      const PixelHit &a = hits[i], &b = refHits[i];
+      if (a.found != b.found || (a.found && !sameRef(a.ref, b.ref))) {
+        ++differ;
+        continue;
+      }
+      if (!a.found) continue;
+      const double angle = std::atan2(glm::length(glm::cross(a.normal, b.normal)), glm::dot(a.normal, b.normal));
+      row.maxNormalDegrees = std::max(row.maxNormalDegrees, glm::degrees(angle));
+    }
+    row.hitDiffers = hits.empty() ? 0.0 : double(differ) / double(hits.size());
+    report.rows.push_back(row);
+  }
+  return report;
+}
+
+// --- The plot -------------------------------------------------------------
+
+namespace {
+
+// A 3x5 pixel font for tick labels: each glyph is five rows of three bits.
+const char* const kGlyphChars = "0123456789-e.";
+constexpr unsigned char kGlyphs[][5] = {
+    {7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
+    {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
+    {0, 0, 7, 0, 0}, {2, 5, 7, 4, 3}, {0, 0, 0, 0, 2}};
+
+struct Canvas {
+  Image& image;
+  void fill(int x0, int y0, int x1, int y1, const Color& c) {
+    for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
+      for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) image.at(x, y) = c;
+  }
+  // Scaled by `s`, top-left at (x, y).
+  void text(int x, int y, const std::string& s, int scale, const Color& c) {
+    for (char ch : s) {
+      const char* at = std::strchr(kGlyphChars, ch);
+      if (ch && at) {
+        const unsigned char* g = kGlyphs[at - kGlyphChars];
+        for (int r = 0; r < 5; ++r)
+          for (int b = 0; b < 3; ++b)
+            if (g[r] & (4 >> b)) fill(x + b * scale, y + r * scale, x + (b + 1) * scale, y + (r + 1) * scale, c);
+      }
+      x += 4 * scale;
+    }
+  }
+};
+
+const Color& groupColor(const std::string& group) {
+  static const Color colors[] = {{0.85, 0.2, 0.1}, {0.1, 0.5, 0.9}, {0.1, 0.65, 0.2},
+                                 {0.6, 0.2, 0.8}, {0.9, 0.6, 0.0}, {0.3, 0.3, 0.3}};
+  static const char* groups[] = {"progressive", "samples", "triangle", "precision", "accel"};
+  for (int i = 0; i < 5; ++i)
+    if (group == groups[i]) return colors[i];
+  return colors[5];
+}
+
+}  // namespace
+
+Image plotErrorAgainstTime(const SceneReport& report, int width, int height) {
+  Image image(width, height, Color(1.0));
+  Canvas canvas{image};
+  constexpr double kFloor = 0.01;  // RMSE 0 (identical images) is plotted at 0.01
+  double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
+  for (const ReportRow& r : report.rows) {
+    x0 = std::min(x0, r.seconds), x1 = std::max(x1, r.seconds);
+    y0 = std::min(y0, r.rmse + kFloor), y1 = std::max(y1, r.rmse + kFloor);
+  }
+  if (report.rows.empty()) return image;
+  const int dx0 = int(std::floor(std::log10(x0))), dx1 = std::max(dx0 + 1, int(std::ceil(std::log10(x1))));
+  const int dy0 = int(std::floor(std::log10(y0))), dy1 = std::max(dy0 + 1, int(std::ceil(std::log10(y1))));
+  const int left = 70, right = width - 40, top = 20, bottom = height - 50;
+  const auto px = [&](double s) { return left + (std::log10(s) - dx0) / (dx1 - dx0) * (right - left); };
+  const auto py = [&](double e) { return bottom - (std::log10(e) - dy0) / (dy1 - dy0) * (bottom - top); };
+  const Color grid(0.85), axis(0.0);
+  for (int d = dx0; d <= dx1; ++d) {
+    const int x = int(px(std::pow(10.0, d)));
+    canvas.fill(x, top, x + 1, bottom, grid);
+    canvas.text(x - 8, bottom + 10, "1e" + std::to_string(d), 3, axis);
+  }
+  for (int d = dy0; d <= dy1; ++d) {
+    const int y = int(py(std::pow(10.0, d)));
+    canvas.fill(left, y, right, y + 1, grid);
+    canvas.text(8, y - 7, "1e" + std::to_string(d), 3, axis);
+  }
+  canvas.fill(left, top, left + 2, bottom, axis);
+  canvas.fill(left, bottom, right, bottom + 2, axis);
+  // The JPEG-noise threshold as a dashed line.
+  const int yn = int(py(report.jpegNoiseRmse + kFloor));
+  for (int x = left; x < right; x += 12) canvas.fill(x, yn, x + 6, yn + 2, Color(0.9, 0.3, 0.3));
+  for (const ReportRow& r : report.rows) {
+    const int x = int(px(r.seconds)), y = int(py(r.rmse + kFloor));
+    canvas.fill(x - 4, y - 4, x + 5, y + 5, axis);
+    canvas.fill(x - 3, y - 3, x + 4, y + 4, groupColor(r.config.group));
+  }
+  return image;
+}
+
+// --- The written report ---------------------------------------------------
+
+void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
+                 const std::string& stability) {
+  std::filesystem::create_directories(dir);
+  std::ofstream csv(dir / "report.csv");
+  std::ofstream md(dir / "report.md");
+  if (!csv || !md) throw std::runtime_error("cannot write the report into " + dir.string());
+  csv << "scene,group,config,accel,triangle,precision,step,samples,seconds,rmse,psnr,"
+         "hit_differs,max_normal_deg,reference\n";
+  md << "# Error against run time\n\n"
+     << "Each configuration renders the whole image once on all cores; the time is wall time "
+        "(including the BVH build), so it varies with machine load. RMSE and PSNR are against "
+        "the reference named per scene (8-bit units; our image JPEG-encoded first when the "
+        "reference is a JPEG, as the conformance test does). *Hit differs* is the share of "
+        "pixels whose primary ray hits another primitive than a double-precision brute-force "
+        "trace; *normal* the worst angle between shading normals where the primitive is the "
+        "same. Coarse passes trace one pixel per block and repeat it over the block, as the "
+        "viewer's first passes do.\n\n"
+     << "Plots: RMSE + 0.01 against seconds, log axes; red = progressive passes, blue = samples "
+        "per pixel, green = triangle test (double), purple = single precision, orange = "
+        "acceleration; the dashed line is the JPEG-noise threshold.\n\n";
+  char buf[512];
+  for (const SceneReport& s : scenes) {
+    const std::string name = s.scene.stem().string();
+    md << "## " << name << "\n\nReference: " << s.reference << "; within JPEG noise means RMSE <= "
+       << (std::snprintf(buf, sizeof buf, "%.3f", s.jpegNoiseRmse), buf) << ".\n\n"
+       << "| configuration | group | seconds | RMSE | PSNR dB | hit differs | normal deg |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    const ReportRow* cheapest = nullptr;
+    for (const ReportRow& r : s.rows) {
+      const ReportConfig& c = r.config;
+      std::snprintf(buf, sizeof buf, "| %s | %s | %.3f | %.3f | %.1f | %.4f%% | %.3g |\n",
+                    c.name.c_str(), c.group.c_str(), r.seconds, r.rmse, r.psnr,
+                    100.0 * r.hitDiffers, r.maxNormalDegrees);
+      md << buf;
+      std::snprintf(buf, sizeof buf, "%s,%s,%s,%s,%s,%s,%d,%d,%.6f,%.4f,%.3f,%.6f,%.6g,\"%s\"\n",
+                    name.c_str(), c.group.c_str(), c.name.c_str(), toString(c.trace.accel),
+                    toString(c.trace.triangle.test), toString(c.trace.triangle.precision), c.step,
+                    c.samples, r.seconds, r.rmse, r.psnr, r.hitDiffers, r.maxNormalDegrees,
+                    s.reference.c_str());
+      csv << buf;
+      if (r.rmse <= s.jpegNoiseRmse && (!cheapest || r.seconds < cheapest->seconds)) cheapest = &r;
+    }
+    md << "\n**Conclusion:** "
+       << (cheapest ? "the cheapest configuration within JPEG noise of the reference is *" +
+                          cheapest->config.name + "* (" +
+                          (std::snprintf(buf, sizeof buf, "%.3f s, RMSE %.3f", cheapest->seconds,
+                                         cheapest->rmse),
+                           buf) +
+                          ")."
+                    : std::string("no configuration is within JPEG noise of the reference."))
+       << "\n\n![error against time](plot_" << name << ".png)\n\n";
+    if (!s.leftOut.empty()) {
+      md << "Left out, and why:\n\n";
+      for (const std::string& l : s.leftOut) md << "- " << l << "\n";
+      md << "\n";
+    }
+    writeImage(quantize(plotErrorAgainstTime(s)), dir / ("plot_" + name + ".png"));
+  }
+  md << "## Stability suite\n\n"
+     << "Per triangle test and precision (tests/core/stability_*_test.cpp): leaks = rays from "
+        "inside a closed 16x16-gridded box aimed exactly at its vertices and edges that hit "
+        "nothing; multiple hits = rays that more than one triangle accepts; self re-hits = "
+        "spawned shadow and reflection rays hitting the triangle they left (sizes 1e-4 to 1e4 "
+        "at offsets 0 to 1e6); wrong hit/miss and the error columns are against a "
+        "quad-precision reference on grazing, sliver, huge and tiny triangles. Mrays/s is the "
+        "brute-force box test on one core.\n\n"
+     << stability << "\n";
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,808 @@
+// The BVH against brute force, ray by ray: over a million random rays on
+// generated meshes and object scenes (origins inside, outside and exactly on
+// the bounding box; axis-parallel directions included), the BVH must report
+// the same primitive, t and barycentrics as --accel none, and its any-hit
+// query must agree with the closest hit. Rays spawned off the hits, told the
+// triangle they leave, must agree too.
+#include <gtest/gtest.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+
+#include "accel/binary_bvh.h"
+#include "accel/bvh8.h"
+#include "accel/scene_bvh.h"
+#include "accel/triangle_set.h"
+#include "meshtrace/accel/intersector.h"
+#include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/render/spawn.h"
+
+namespace meshtrace {
+namespace {
+
+Mesh makeMesh(const char* name, MeshData data) {
+  return Mesh(name, std::move(data), Shading::Flat, Material{});
+}
+
+// Rotates every vertex so that no face stays axis-aligned.
+MeshData rotated(MeshData m, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Vec3& v : m.vertices) {
+    v = {c * v.x - s * v.z, v.y, s * v.x + c * v.z};
+    v = {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+  }
+  return m;
+}
+
+// Random triangles, a few of them repeated exactly (equal-t ties between
+// different indices) and a few sharing a vertex with the previous one.
+MeshData triangleSoup(int n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0), small(-0.2, 0.2);
+  MeshData m;
+  for (int i = 0; i < n; ++i) {
+    const auto next = static_cast<std::uint32_t>(m.vertices.size());
+    if (i % 10 == 9) {  // a duplicate of the previous triangle
+      m.triangles.push_back(m.triangles.back());
+      continue;
+    }
+    const Vec3 c(u(rng), u(rng), u(rng));
+    for (int k = 0; k < 3; ++k) m.vertices.push_back(c + Vec3(small(rng), small(rng), small(rng)));
+    m.triangles.push_back({next, next + 1, next + 2});
+  }
+  return m;
+}
+
+std::vector<Aabb> triangleBoxes(const MeshData& m) {
+  std::vector<Aabb> boxes;
+  for (const auto& t : m.triangles) {
+    Aabb b;
+    for (auto k : t) b.extend(m.vertices[k]);
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+Scene meshScene(std::vector<Mesh> meshes) {
+  Scene scene;
+  scene.meshes = std::move(meshes);
+  return scene;
+}
+
+// Spheres (two of them identical: a tie), cylinders, planes and meshes,
+// one of them (2 triangles) too small for a BVH.
+Scene objectScene(std::mt19937_64& rng) {
+  Scene scene;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 150; ++i)
+    scene.spheres.push_back({Vec3(u(rng), u(rng), u(rng)), 0.02 + 0.1 * std::abs(u(rng)), {}});
+  scene.spheres.push_back(scene.spheres[7]);
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 axis = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+    scene.cylinders.push_back({Vec3(u(rng), u(rng), u(rng)), 0.05, axis, 0.3, {}});
+  }
+  scene.planes.push_back({Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), {}});
+  scene.planes.push_back({Vec3(0.0, 0.0, -1.2), glm::normalize(Vec3(0.1, 0.2, 1.0)), {}});
+  scene.meshes.push_back(makeMesh("ball", makeIcosphere(Vec3(0.3, 0.2, 0.1), 0.4, 2)));
+  scene.meshes.push_back(makeMesh("cube", makeGriddedBox(Vec3(-0.5), Vec3(-0.2), 1)));
+  scene.meshes.push_back(makeMesh("floor", makeGrid(Vec3(0.0, -0.5, 0.0), 1.5, 6)));
+  scene.meshes.push_back(makeMesh("square", makeGrid(Vec3(0.5, 0.6, -0.3), 0.4, 1)));
+  return scene;
+}
+
+Aabb sceneBox(const Scene& scene) {
+  Aabb box;
+  for (const Mesh& m : scene.meshes) box.extend(m.bounds());
+  for (const Sphere& s : scene.spheres) {
+    box.extend(s.center - Vec3(s.radius));
+    box.extend(s.center + Vec3(s.radius));
+  }
+  return box;
+}
+
+// A target point on the scene's geometry, so that most rays hit something.
+Vec3 randomTarget(const Scene& scene, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  if (!scene.spheres.empty() && u(rng) < 0.5) {
+    const Sphere& s = scene.spheres[rng() % scene.spheres.size()];
+    const Vec3 d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    return s.center + s.radius * d;
+  }
+  const Mesh& m = scene.meshes[rng() % scene.meshes.size()];
+  const TriangleIndices& t = m.triangles()[rng() % m.triangles().size()];
+  double b = u(rng), g = u(rng);
+  if (b + g > 1.0) b = 1.0 - b, g = 1.0 - g;
+  // Exactly on a vertex or an edge now and then.
+  if (u(rng) < 0.05) b = 0.0;
+  if (u(rng) < 0.05) g = 0.0;
+  const auto& v = m.vertices();
+  return (1.0 - b - g) * v[t[0]] + b * v[t[1]] + g * v[t[2]];
+}
+
+Ray randomRay(const Scene& scene, const Aabb& box, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Vec3 lo = box.min, hi = box.max, e = box.extent();
+  Vec3 o;
+  const double kind = u(rng);
+  if (kind < 0.35) {  // inside the box
+    o = lo + Vec3(u(rng), u(rng), u(rng)) * e;
+  } else if (kind < 0.7) {  // outside it, up to one box size away
+    o = lo - e + 3.0 * Vec3(u(rng), u(rng), u(rng)) * e;
+  } else {  // exactly on one of its faces
+    o = lo + Vec3(u(rng), u(rng), u(rng)) * e;
+    const int axis = static_cast<int>(rng() % 3);
+    o[axis] = rng() % 2 ? lo[axis] : hi[axis];
+  }
+  Vec3 d;
+  const double dir = u(rng);
+  if (dir < 0.25) {  // axis-parallel
+    d = Vec3(0.0);
+    d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+  } else if (dir < 0.4) {  // along a box face (one component zero)
+    d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    d[rng() % 3] = 0.0;
+    d = glm::normalize(d);
+  } else if (dir < 0.55) {  // uniformly random
+    d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+  } else {  // toward the geometry
+    d = randomTarget(scene, rng) - o;
+    if (d == Vec3(0.0)) d = Vec3(0.0, 0.0, 1.0);
+    d = glm::normalize(d);
+  }
+  return {o, d};
+}
+
+std::string describe(const Ray& ray, const Hit& h) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+    << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << "): ";
+  if (!h.found()) return s.str() + "miss";
+  s << toString(h.ref.kind) << " " << h.ref.object << " triangle " << h.ref.triangle
+    << " t=" << h.t;
+  return s.str();
+}
+
+struct Disagreements {
+  std::uint64_t rays = 0, hits = 0, closest = 0, anyHit = 0, spawned = 0;
+  std::string example;
+  void add(const Disagreements& o) {
+    rays += o.rays;
+    hits += o.hits;
+    closest += o.closest;
+    anyHit += o.anyHit;
+    spawned += o.spawned;
+    if (example.empty()) example = o.example;
+  }
+};
+
+bool sameHit(bool foundA, const Hit& a, bool foundB, const Hit& b) {
+  return foundA == foundB &&
+         (!foundA || (a.t == b.t && a.ref.kind == b.ref.kind && a.ref.object == b.ref.object &&
+                      a.ref.triangle == b.ref.triangle && a.beta == b.beta && a.gamma == b.gamma));
+}
+
+// Casts `count` random rays through the BVH and brute force and counts where
+// they disagree: in the closest hit, in any-hit against brute force, in
+// any-hit against the closest hit, and for a ray spawned off each hit.
+Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
+                      TriangleKernel kernel = {}, const SceneBvhOptions& bvhOptions = {}) {
+  const SceneIntersector bvh(scene, {.accel = AccelMethod::Bvh, .triangle = kernel, .bvh = bvhOptions});
+  const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = kernel});
+  const Aabb box = sceneBox(scene);
+  const bool exactLimit = kernel.test != TriangleTest::Watertight;
+  constexpr std::uint64_t kChunk = 4096;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::uint64_t>(0, (count + kChunk - 1) / kChunk), Disagreements(),
+      [&](const tbb::blocked_range<std::uint64_t>& r, Disagreements acc) {
+        Counters c;
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (std::uint64_t chunk = r.begin(); chunk < r.end(); ++chunk) {
+          std::mt19937_64 rng(seed * 1000003 + chunk);
+          for (std::uint64_t i = 0; i < kChunk && chunk * kChunk + i < count; ++i) {
+            const Ray ray = randomRay(scene, box, rng);
+            Hit a, b;
+            const bool fa = bvh.closestHit(ray, 0.0, a, c);
+            const bool fb = brute.closestHit(ray, 0.0, b, c);
+            ++acc.rays;
+            acc.hits += fb;
+            if (!sameHit(fa, a, fb, b)) {
+              ++acc.closest;
+              if (acc.example.empty())
+                acc.example = "bvh " + describe(ray, a) + " | brute force " + describe(ray, b);
+            }
+            // One limit per ray: beyond the closest hit, exactly at it, or before it.
+            const double scale[] = {1.25, 1.0, 0.8};
+            const double tMax = (fb ? b.t : 2.0) * scale[rng() % 3];
+            {
+              const bool oa = bvh.occluded(ray, 0.0, tMax, c);
+              const bool ob = brute.occluded(ray, 0.0, tMax, c);
+              // With an exact t < tMax cut-off, any-hit is the closest hit's t
+              // compared with the limit.
+              const bool consistent = !exactLimit || oa == (fb && b.t < tMax);
+              if (oa != ob || !consistent) {
+                ++acc.anyHit;
+                if (acc.example.empty())
+                  acc.example = "any-hit to " + std::to_string(tMax) + ": bvh " +
+                                std::to_string(oa) + ", brute force " + std::to_string(ob) +
+                                ", closest " + describe(ray, b);
+              }
+            }
+            // A ray spawned off the hit in a random direction, told the
+            // primitive it leaves (spawn.h), as shadow and reflection rays are.
+            if (fb) {
+              const SurfacePoint sp = surfaceAt(scene, ray, b, kernel.precision);
+              const Vec3 d = glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+              const Ray spawned{spawnOrigin(sp, d), d};
+              Hit sa, sb;
+              const bool ga = bvh.closestHit(spawned, kSpawnTMin, sa, c, &sp.primitive);
+              const bool gb = brute.closestHit(spawned, kSpawnTMin, sb, c, &sp.primitive);
+              const double limit = (gb ? sb.t : 2.0) * scale[rng() % 3];
+              if (!sameHit(ga, sa, gb, sb) ||
+                  bvh.occluded(spawned, kSpawnTMin, limit, c, &sp.primitive) !=
+                      brute.occluded(spawned, kSpawnTMin, limit, c, &sp.primitive)) {
+                ++acc.spawned;
+                if (acc.example.empty())
+                  acc.example = "spawned: bvh " + describe(spawned, sa) + " | brute force " +
+                                describe(spawned, sb);
+              }
+            }
+          }
+        }
+        return acc;
+      },
+      [](Disagreements a, const Disagreements& b) {
+        a.add(b);
+        return a;
+      });
+}
+
+void expectAgreement(const char* label, const Disagreements& d) {
+  std::printf(
+      "[ figures  ] %-12s %llu rays, %llu hits; closest-hit differences %llu, any-hit %llu, "
+      "spawned %llu\n",
+      label, static_cast<unsigned long long>(d.rays), static_cast<unsigned long long>(d.hits),
+      static_cast<unsigned long long>(d.closest), static_cast<unsigned long long>(d.anyHit),
+      static_cast<unsigned long long>(d.spawned));
+  EXPECT_GT(d.hits, d.rays / 5) << label << ": too few rays hit to mean much";
+  EXPECT_EQ(d.closest, 0u) << label << ": " << d.example;
+  EXPECT_EQ(d.anyHit, 0u) << label << ": " << d.example;
+  EXPECT_EQ(d.spawned, 0u) << label << ": " << d.example;
+}
+
+// Over a million rays in all, on meshes of a few hundred triangles (brute
+// force has to keep up).
+TEST(BvhAgreesWithBruteForce, GeneratedMeshes) {
+  std::mt19937_64 rng(42);
+  const Scene knot = meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
+  const Scene ball =
+      meshScene({makeMesh("ball", rotated(makeIcosphere(Vec3(0.1, 0.2, 0.3), 1.0, 2), 0.3))});
+  const Scene boxes = meshScene({makeMesh("box", makeGriddedBox(Vec3(-1.0), Vec3(1.0), 4)),
+                                 makeMesh("grid", makeGrid(Vec3(0.0, 0.25, 0.0), 1.5, 8))});
+  const Scene soup = meshScene({makeMesh("soup", triangleSoup(400, rng))});
+  expectAgreement("torus knot", compare(knot, 300000, 1));
+  expectAgreement("icosphere", compare(ball, 250000, 2));
+  expectAgreement("gridded box", compare(boxes, 250000, 3));
+  expectAgreement("soup", compare(soup, 250000, 4));
+}
+
+// The meshes of a scene share one triangle BVH: a tie between two meshes
+// still goes to the lower mesh index, as in brute force, and a small mesh
+// far from a large one keeps its hits though the blocks' float frame is
+// sized for both.
+TEST(BvhAgreesWithBruteForce, MeshesSharingOneTree) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 2);
+  const Scene twins =
+      meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
+                 makeMesh("knot", makeTorusKnot(Vec3(0.5, 0.0, 0.0), 0.8, 2, 3, 0.2, 48, 6))});
+  const Scene apart = meshScene(
+      {makeMesh("ball", ball),
+       makeMesh("speck", makeTorusKnot(Vec3(1000.0, 0.0, 0.0), 0.01, 2, 3, 0.25, 48, 6))});
+  expectAgreement("twin meshes", compare(twins, 200000, 11));
+  expectAgreement("far speck", compare(apart, 200000, 12));
+}
+
+TEST(BvhAgreesWithBruteForce, ObjectsOfEveryKind) {
+  std::mt19937_64 rng(7);
+  expectAgreement("objects", compare(objectScene(rng), 200000, 5));
+}
+
+// Whatever triangle kernel TraceOptions selects, the BVH calls that one.
+TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
+  std::mt19937_64 rng(9);
+  const Scene scene = meshScene({makeMesh("soup", triangleSoup(300, rng)),
+                                 makeMesh("box", makeGriddedBox(Vec3(-0.3), Vec3(0.4), 3))});
+  for (TriangleTest test :
+       {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight})
+    for (Precision precision : {Precision::Double, Precision::Single}) {
+      const std::string label = std::string(toString(test)) + "/" + toString(precision);
+      expectAgreement(label.c_str(), compare(scene, 40000, 6, {test, precision}));
+    }
+}
+
+// Whether two directions have the same octant (the sign bits, -0 included,
+// as the slab ray takes them).
+bool sameOctant(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::signbit(a[k]) != std::signbit(b[k])) return false;
+  return true;
+}
+
+// Packets of four rays through SceneIntersector::closestHitPacket and
+// occludedPacket against brute force, ray by ray: the packet as given, then
+// some of its rays (any-hit and closest-hit), spawned off their hits in one
+// direction as shadow and reflection rays are. Most packets are what a
+// camera makes: one origin and directions a little apart, or one direction
+// (axis-parallel ones too) from origins a little apart; every fourth is four
+// unrelated rays, which seldom share an octant and go ray by ray.
+struct PacketCheck {
+  std::uint64_t rays = 0, hits = 0, differences = 0, sharedOctant = 0;
+  std::uint64_t blocked = 0, anyHitDifferences = 0;
+  std::uint64_t spawnedHits = 0;  // of the spawned rays' closest hits
+  std::string example;
+};
+PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
+                           const SceneBvhOptions& bvhOptions = {}) {
+  const SceneIntersector bvh(scene, {.accel = AccelMethod::Bvh, .bvh = bvhOptions});
+  const SceneIntersector brute(scene, {.accel = AccelMethod::None});
+  const Aabb box = sceneBox(scene);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PacketCheck check;
+  Counters c;
+  for (int p = 0; p < packets; ++p) {
+    Ray rays[kPacketSize];
+    const Ray lead = randomRay(scene, box, rng);
+    const double spread = p % 2 ? 1e-3 : 1e-2;
+    for (int r = 0; r < kPacketSize; ++r) {
+      if (p % 4 == 3) {
+        rays[r] = randomRay(scene, box, rng);
+      } else if (p % 4 == 2) {
+        rays[r] = {lead.origin + spread * box.extent() * Vec3(u(rng), u(rng), u(rng)),
+                   lead.direction};
+      } else {
+        const Vec3 d = lead.direction + spread * Vec3(u(rng), u(rng), u(rng));
+        rays[r] = {lead.origin, r == 0 ? lead.direction : glm::normalize(d)};
+      }
+    }
+    bool shared = true;
+    for (const Ray& r : rays) shared = shared && sameOctant(r.direction, rays[0].direction);
+    check.sharedOctant += shared;
+    const double tMin = p % 3 == 0 ? kSpawnTMin : 0.0;
+    Hit hits[kPacketSize];
+    bool found[kPacketSize];
+    bvh.closestHitPacket(rays, tMin, hits, found, c);
+    // Any-hit: some rays left out, the others up to a limit near their
+    // hit, and, as shadow rays, spawned off it and told what they leave.
+    double limit[kPacketSize];
+    PrimitiveRef start[kPacketSize];
+    Ray spawned[kPacketSize];
+    const std::uint32_t active = static_cast<std::uint32_t>(rng() % 15) + 1;
+    const bool fromHits = p % 2 == 0;
+    const Vec3 towards = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+    for (int r = 0; r < kPacketSize; ++r) {
+      const double scale[] = {1.25, 1.0, 0.8};
+      limit[r] = (found[r] ? hits[r].t : 2.0) * scale[rng() % 3];
+      spawned[r] = rays[r];
+      if (fromHits && found[r]) {
+        const SurfacePoint sp = surfaceAt(scene, rays[r], hits[r], Precision::Double);
+        spawned[r] = {spawnOrigin(sp, towards), towards};
+        start[r] = sp.primitive;
+      }
+    }
+    const double anyTMin = fromHits ? kSpawnTMin : tMin;
+    const std::uint32_t packetBlocked =
+        bvh.occludedPacket(spawned, anyTMin, limit, start, active, c);
+    // Closest hits of the same rays, as mirror reflections are traced.
+    Hit spawnedHits[kPacketSize];
+    bool spawnedFound[kPacketSize];
+    bvh.closestHitPacket(spawned, anyTMin, spawnedHits, spawnedFound, c, start, active);
+    // Counts a closest hit that differs from brute force's.
+    const auto compareClosest = [&](const char* label, const Ray& ray, bool packetFound,
+                                    const Hit& packetHit, bool bruteFound, const Hit& bruteHit) {
+      if (sameHit(packetFound, packetHit, bruteFound, bruteHit)) return;
+      ++check.differences;
+      if (check.example.empty())
+        check.example = std::string(label) + " " + describe(ray, packetHit) + " | brute force " +
+                        describe(ray, bruteHit);
+    };
+    for (int r = 0; r < kPacketSize; ++r) {
+      Hit b;
+      const bool fb = brute.closestHit(rays[r], tMin, b, c);
+      ++check.rays;
+      check.hits += fb;
+      compareClosest("packet", rays[r], found[r], hits[r], fb, b);
+      Hit spawnedBrute;
+      const bool spawnedExpected =
+          (active >> r & 1) && brute.closestHit(spawned[r], anyTMin, spawnedBrute, c, &start[r]);
+      check.spawnedHits += spawnedExpected;
+      compareClosest("spawned packet", spawned[r], spawnedFound[r], spawnedHits[r], spawnedExpected,
+                     spawnedBrute);
+      const bool expected = (active >> r & 1) &&
+                            brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
+      check.blocked += expected;
+      if (((packetBlocked >> r & 1) != 0) != expected) {
+        ++check.anyHitDifferences;
+        if (check.example.empty())
+          check.example = "any-hit packet, " + describe(spawned[r], Hit{}) + " to " +
+                          std::to_string(limit[r]);
+      }
+    }
+  }
+  return check;
+}
+
+TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
+  std::mt19937_64 rng(21);
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 2);
+  const Scene scenes[] = {
+      meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))}),
+      meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
+                 makeMesh("box", makeGriddedBox(Vec3(-0.5), Vec3(0.7), 3))}),
+      objectScene(rng)};
+  const char* labels[] = {"knot", "twin meshes", "objects"};
+  for (int i = 0; i < 3; ++i) {
+    const PacketCheck check = comparePackets(scenes[i], 40000, 31 + i);
+    std::printf(
+        "[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
+        "octant), %llu hits, %llu spawned hits; differences %llu; any-hit: %llu "
+        "blocked, differences %llu\n",
+        labels[i], static_cast<unsigned long long>(check.rays),
+        static_cast<unsigned long long>(check.sharedOctant),
+        static_cast<unsigned long long>(check.rays / kPacketSize),
+        static_cast<unsigned long long>(check.hits),
+        static_cast<unsigned long long>(check.spawnedHits),
+        static_cast<unsigned long long>(check.differences),
+        static_cast<unsigned long long>(check.blocked),
+        static_cast<unsigned long long>(check.anyHitDifferences));
+    EXPECT_GT(check.hits, check.rays / 5) << labels[i];
+    EXPECT_GT(check.spawnedHits, check.rays / 20) << labels[i];
+    EXPECT_GT(check.sharedOctant, check.rays / kPacketSize / 2) << labels[i];
+    EXPECT_GT(check.blocked, check.rays / 10) << labels[i];
+    EXPECT_EQ(check.differences, 0u) << labels[i] << ": " << check.example;
+    EXPECT_EQ(check.anyHitDifferences, 0u) << labels[i] << ": " << check.example;
+  }
+}
+
+// Fetching children ahead (and a packet's candidate vertices) is a hint to
+// the memory and nothing else: switched on for a small mesh (by default only
+// triangle BVHs of kPrefetchBvhBytes or more use it), every query still
+// finds what brute force finds; switched off, the stats say so.
+TEST(BvhPrefetch, FetchingChildrenAheadChangesNoAnswer) {
+  const Scene knot =
+      meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
+  SceneBvhOptions always;
+  always.prefetchBytes = 0;
+  const SceneIntersector fetching(knot, {.accel = AccelMethod::Bvh, .bvh = always});
+  const SceneIntersector plain(knot, {.accel = AccelMethod::Bvh});
+  ASSERT_TRUE(fetching.bvh()->meshBvh().prefetch);
+  ASSERT_FALSE(plain.bvh()->meshBvh().prefetch);
+  const auto saysNotFetched = [](const SceneIntersector& is) {
+    for (const std::string& item : is.bvh()->stats().leftOut)
+      if (item.rfind("BVH children not fetched ahead", 0) == 0) return true;
+    return false;
+  };
+  EXPECT_FALSE(saysNotFetched(fetching));
+  EXPECT_TRUE(saysNotFetched(plain));
+
+  expectAgreement("torus knot, fetching ahead", compare(knot, 200000, 5, {}, always));
+  const PacketCheck check = comparePackets(knot, 20000, 41, always);
+  EXPECT_GT(check.hits, check.rays / 5);
+  EXPECT_GT(check.blocked, check.rays / 10);
+  EXPECT_EQ(check.differences, 0u) << check.example;
+  EXPECT_EQ(check.anyHitDifferences, 0u) << check.example;
+}
+
+// Structure: every primitive in exactly one leaf, every box inside its
+// parent's, every primitive inside its leaf's box.
+// Whether box b lies within a node's float bounds (min x y z, max x y z).
+bool inside(const Aabb& b, const float* n) {
+  return n[0] <= b.min.x && n[1] <= b.min.y && n[2] <= b.min.z && n[3] >= b.max.x &&
+         n[4] >= b.max.y && n[5] >= b.max.z;
+}
+
+void expectEveryPrimitiveOnceInsideNestedBoxes(const Bvh& bvh, const std::vector<Aabb>& boxes) {
+  ASSERT_FALSE(bvh.empty());
+  EXPECT_LE(bvh.depth, kMaxBvhDepth);
+  std::vector<int> seen(boxes.size(), 0);
+  for (const BvhNode& node : bvh.nodes) {
+    if (node.isLeaf()) {
+      EXPECT_LE(node.count, 4u);
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+        ++seen[bvh.order[k]];
+        EXPECT_TRUE(inside(boxes[bvh.order[k]], node.bounds));
+      }
+      continue;
+    }
+    for (std::uint32_t c : {node.first, node.first + 1}) {
+      const float* b = bvh.nodes[c].bounds;
+      const Aabb child{Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])};
+      EXPECT_TRUE(inside(child, node.bounds));
+    }
+  }
+  for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
+  const std::vector<Aabb> boxes = triangleBoxes(makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12));
+  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(boxes), boxes);
+}
+
+// Large nodes choose their split from a sample of their primitives; the
+// boxes of their children must still hold the primitives left out of it.
+// Here one box in fifty reaches far out, and the sample cannot see them all.
+TEST(BvhBuild, SplitsChosenFromASampleStillGiveBoxesHoldingEveryPrimitive) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Aabb> boxes(100000);
+  for (Aabb& b : boxes) {
+    const Vec3 p(unit(rng), unit(rng), unit(rng));
+    const double reach = unit(rng) < 0.02 ? 5.0 * unit(rng) : 0.001;
+    b = {p, p + Vec3(0.001, reach, 0.001)};
+  }
+  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(boxes), boxes);
+}
+
+// Collapsing keeps every leaf, and every child box holds its node's boxes.
+// Several meshes: their trees are built apart and joined under one over
+// the meshes' boxes. Walking the joined tree from its root reaches every
+// triangle of the set exactly once, each inside its leaf's box, every box
+// inside its parent's.
+TEST(BvhBuild, JoinedMeshTreesReachEveryTriangleOnce) {
+  const std::vector<Mesh> meshes = {
+      makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 200, 12)),
+      makeMesh("ball", makeIcosphere(Vec3(0.5, 0.0, 0.0), 0.7, 3)),  // overlaps the knot
+      makeMesh("box", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3)),
+      makeMesh("twin", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3))};  // the same box again
+  TriangleSet set;
+  for (std::uint32_t i = 0; i < meshes.size(); ++i) set.add(meshes[i], i);
+  const Bvh bvh = buildBvh(set, {.leafBlock = 4});
+  ASSERT_FALSE(bvh.empty());
+  EXPECT_LE(bvh.depth, kMaxBvhDepth);
+  std::vector<int> seen(set.size(), 0);
+  std::vector<std::uint32_t> stack = {0};
+  while (!stack.empty()) {
+    const BvhNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    if (node.isLeaf()) {
+      EXPECT_LE(node.count, 4u);
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+        const std::uint32_t id = bvh.order[k];
+        ASSERT_LT(id, set.size());
+        ++seen[id];
+        const TriangleSet::Member t = set[id];
+        Aabb box;
+        for (std::uint32_t v : t.mesh->triangles()[t.triangle]) box.extend(t.mesh->vertices()[v]);
+        EXPECT_TRUE(inside(box, node.bounds)) << "triangle " << id;
+      }
+      continue;
+    }
+    for (std::uint32_t c : {node.first, node.first + 1}) {
+      const float* b = bvh.nodes[c].bounds;
+      EXPECT_TRUE(inside({Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])}, node.bounds));
+      stack.push_back(c);
+    }
+  }
+  for (std::size_t id = 0; id < seen.size(); ++id) ASSERT_EQ(seen[id], 1) << "triangle " << id;
+}
+
+TEST(BvhBuild, EightWideTreeKeepsEveryLeafInsideItsBox) {
+  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
+  const std::vector<Aabb> boxes = triangleBoxes(knot);
+  const Bvh8 bvh = collapseToBvh8(buildBvh(boxes));
+  ASSERT_FALSE(bvh.nodes.empty());
+  std::vector<int> seen(boxes.size(), 0);
+  // Walk from the root, checking each child against the box it came with.
+  struct Item {
+    std::uint32_t node;
+    Aabb box;
+  };
+  std::vector<Item> todo{{0, Aabb{Vec3(-kInfinity), Vec3(kInfinity)}}};
+  std::size_t visited = 0;
+  while (!todo.empty()) {
+    const Item item = todo.back();
+    todo.pop_back();
+    ++visited;
+    const Bvh8Node& node = bvh.nodes[item.node];
+    for (int i = 0; i < kBvhWidth; ++i) {
+      const Aabb child{Vec3(node.lo[0][i], node.lo[1][i], node.lo[2][i]),
+                       Vec3(node.hi[0][i], node.hi[1][i], node.hi[2][i])};
+      if (child.empty()) continue;  // an unused slot
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(item.box.min, child.min)) &&
+                  glm::all(glm::lessThanEqual(child.max, item.box.max)));
+      if (node.count[i] == 0) {
+        todo.push_back({node.first[i], child});
+        continue;
+      }
+      for (std::uint32_t k = node.first[i]; k < node.first[i] + node.count[i]; ++k) {
+        ++seen[bvh.order[k]];
+        const Aabb& b = boxes[bvh.order[k]];
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(child.min, b.min)) &&
+                    glm::all(glm::lessThanEqual(b.max, child.max)));
+      }
+    }
+  }
+  EXPECT_EQ(visited, bvh.nodes.size());
+  for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+double halfAreaOf(const float* lo, const float* hi) {
+  const double x = double{hi[0]} - lo[0], y = double{hi[1]} - lo[1], z = double{hi[2]} - lo[2];
+  return x * y + y * z + z * x;
+}
+
+// The least sum of the half-areas of the binary nodes made 8-wide nodes, by
+// trying every set of interior nodes that holds the root and leaves each of
+// them at most eight children (the leaves and chosen nodes first met below).
+double leastWideNodeArea(const Bvh& binary) {
+  std::vector<std::uint32_t> interior;
+  for (std::uint32_t i = 0; i < binary.nodes.size(); ++i)
+    if (!binary.nodes[i].isLeaf()) interior.push_back(i);
+  std::vector<int> bit(binary.nodes.size(), -1);
+  for (std::size_t k = 0; k < interior.size(); ++k) bit[interior[k]] = static_cast<int>(k);
+  double best = kInfinity;
+  for (std::uint32_t chosen = 1; chosen < (1u << interior.size()); chosen += 2) {  // root: bit 0
+    bool fits = true;
+    double area = 0.0;
+    for (std::size_t k = 0; k < interior.size() && fits; ++k) {
+      if (!(chosen >> k & 1)) continue;
+      const BvhNode& wide = binary.nodes[interior[k]];
+      area += halfAreaOf(wide.bounds, wide.bounds + 3);
+      int children = 0;
+      std::vector<std::uint32_t> todo{wide.first, wide.first + 1};
+      while (!todo.empty() && children <= kBvhWidth) {
+        const std::uint32_t c = todo.back();
+        todo.pop_back();
+        const BvhNode& node = binary.nodes[c];
+        if (node.isLeaf() || (chosen >> bit[c] & 1)) {
+          ++children;
+        } else {
+          todo.push_back(node.first);
+          todo.push_back(node.first + 1);
+        }
+      }
+      fits = children <= kBvhWidth;
+    }
+    if (fits) best = std::min(best, area);
+  }
+  return best;
+}
+
+// Which binary nodes become 8-wide nodes is a choice; the collapse makes the
+// one whose nodes' areas sum to the least (the surface area heuristic's
+// expected visits), found here by trying every choice on small trees.
+TEST(BvhBuild, EightWideNodesHaveTheLeastAreaSum) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), size(0.01, 0.3);
+  for (int tree = 0; tree < 6; ++tree) {
+    std::vector<Aabb> boxes;
+    for (int k = 0; k < 19; ++k) {
+      const Vec3 c(u(rng), u(rng), u(rng) * 0.2), half(size(rng), size(rng), size(rng));
+      boxes.push_back(Aabb{c - half, c + half});
+    }
+    const Bvh binary = buildBvh(boxes, {.maxLeafSize = 1});
+    const double least = leastWideNodeArea(binary);
+    const Bvh8 wide = collapseToBvh8(binary);
+    double sum = halfAreaOf(binary.nodes[0].bounds, binary.nodes[0].bounds + 3);
+    for (const Bvh8Node& node : wide.nodes)
+      for (int i = 0; i < kBvhWidth; ++i) {
+        const float lo[3] = {node.lo[0][i], node.lo[1][i], node.lo[2][i]};
+        const float hi[3] = {node.hi[0][i], node.hi[1][i], node.hi[2][i]};
+        if (node.count[i] == 0 && lo[0] <= hi[0]) sum += halfAreaOf(lo, hi);  // an 8-wide child
+      }
+    EXPECT_NEAR(sum, least, 1e-5 * least) << "tree " << tree;
+  }
+}
+
+// The build is parallel, but the tree does not depend on the thread count.
+TEST(BvhBuild, SameTreeOnOneThreadAsOnAll) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 6);  // 82k triangles
+  const std::vector<Aabb> boxes = triangleBoxes(ball);
+  const Bvh all = buildBvh(boxes);
+  Bvh one;
+  tbb::task_arena(1).execute([&] { one = buildBvh(boxes); });
+  EXPECT_EQ(all.nodes.size(), one.nodes.size());
+  EXPECT_EQ(all.depth, one.depth);
+  EXPECT_TRUE(all.order == one.order);
+}
+
+TEST(BvhBuild, CoincidentBoxesStillGiveSmallLeaves) {
+  const std::vector<Aabb> boxes(1000, Aabb{Vec3(1.0), Vec3(2.0)});
+  const Bvh bvh = buildBvh(boxes);
+  for (const BvhNode& node : bvh.nodes)
+    if (node.isLeaf()) {
+      EXPECT_LE(node.count, 4u);
+    }
+  EXPECT_LE(bvh.depth, 12);
+}
+
+TEST(SceneBvh, SmallMeshesGetNoBvhAndAreSaidToBeLeftOut) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(3.0), 1.0, 2)));
+  const SceneBvh bvh(scene);
+  EXPECT_FALSE(bvh.inMeshBvh(0));
+  EXPECT_TRUE(bvh.inMeshBvh(1));
+  std::vector<std::string> meshesLeftOut;
+  for (const std::string& item : bvh.stats().leftOut)
+    if (item.rfind("no BVH for ", 0) == 0) meshesLeftOut.push_back(item);
+  ASSERT_EQ(meshesLeftOut.size(), 1u);
+  EXPECT_NE(meshesLeftOut[0].find("square.off"), std::string::npos);
+}
+
+// Every mesh large enough for a BVH is in the one triangle BVH, which the
+// top level holds as a single object beside the meshes left out.
+TEST(SceneBvh, LargeMeshesShareOneTriangleBvh) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 2)));
+  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
+  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(2.0), Vec3(3.0), 2)));
+  const SceneBvh bvh(scene);
+  EXPECT_EQ(bvh.stats().meshesWithBvh, 2u);
+  EXPECT_EQ(bvh.stats().trianglesInBvhs,
+            scene.meshes[0].triangles().size() + scene.meshes[2].triangles().size());
+  EXPECT_EQ(bvh.meshBvh().triangles.meshCount(), 2u);
+  EXPECT_EQ(bvh.stats().topLevelObjects, 2u);  // the triangle BVH and the square
+}
+
+// The queries find a block's mesh once, from its first lane: every block of
+// the shared tree must hold triangles of one mesh, however the meshes
+// interleave in space.
+TEST(SceneBvh, EachTriangleBlockHoldsOneMesh) {
+  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 3);
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", ball));
+  scene.meshes.push_back(makeMesh("twin.off", ball));
+  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(-0.9), Vec3(0.9), 5)));
+  const SceneBvh bvh(scene);
+  const MeshBvh& shared = bvh.meshBvh();
+  ASSERT_EQ(shared.triangles.meshCount(), 3u);
+  std::size_t lanes = 0, mixed = 0;
+  for (const TriangleBlock4& block : shared.blocks)
+    for (int lane = 0; lane < 4 && block.id[lane] != kNoTriangle; ++lane) {
+      ++lanes;
+      mixed += shared.triangles[block.id[lane]].sceneIndex !=
+               shared.triangles[block.id[0]].sceneIndex;
+    }
+  EXPECT_EQ(lanes, shared.triangles.size());
+  EXPECT_EQ(mixed, 0u);
+}
+
+// Nodes and triangle blocks together stay within 64 bytes per triangle on
+// large meshes: the collapse keeps small subtrees inside their parent rather
+// than giving them nodes of their own with few children.
+TEST(SceneBvh, TakesAtMost64BytesPerTriangle) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 6)));  // 82k
+  scene.meshes.push_back(
+      makeMesh("knot.off", makeTorusKnot(Vec3(3.0), 1.0, 2, 3, 0.3, 600, 40)));  // 48k
+  const auto bytesPerTriangle = [](const Scene& s) {
+    const SceneBvh bvh(s);
+    return static_cast<double>(bvh.meshBvh().bytes()) /
+           static_cast<double>(bvh.stats().trianglesInBvhs);
+  };
+  for (const Mesh& mesh : scene.meshes) {
+    Scene alone;
+    alone.meshes.push_back(mesh);
+    const double perTriangle = bytesPerTriangle(alone);
+    std::printf("%s: %.1f bytes per triangle\n", mesh.file().c_str(), perTriangle);
+    EXPECT_LE(perTriangle, 64.0) << mesh.file();
+  }
+  const double together = bytesPerTriangle(scene);
+  std::printf("both in one BVH: %.1f bytes per triangle\n", together);
+  EXPECT_LE(together, 64.0);
+}
+
+TEST(Accel, BvhIsTheDefaultAndParses) {
+  EXPECT_EQ(TraceOptions{}.accel, AccelMethod::Bvh);
+  EXPECT_EQ(parseAccelMethod("bvh"), AccelMethod::Bvh);
+  EXPECT_STREQ(toString(AccelMethod::Bvh), "bvh");
+  EXPECT_THROW(parseAccelMethod("kd"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace meshtrace

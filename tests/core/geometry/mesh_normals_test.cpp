@@ -1,0 +1,215 @@
+// Triangle normals and angle-weighted vertex normals, against hand-computed
+// cases, and the Mesh that holds them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "meshtrace/geometry/mesh.h"
+#include "meshtrace/geometry/triangle.h"
+
+namespace meshtrace {
+namespace {
+
+constexpr double kTol = 1e-12;
+
+void expectNear(const Vec3& actual, const Vec3& expected, double tol = kTol) {
+  EXPECT_NEAR(actual.x, expected.x, tol) << "x";
+  EXPECT_NEAR(actual.y, expected.y, tol) << "y";
+  EXPECT_NEAR(actual.z, expected.z, tol) << "z";
+}
+
+std::vector<Vec3> triangleNormalsOf(const MeshData& mesh) {
+  std::vector<Vec3> normals;
+  for (const TriangleIndices& t : mesh.triangles)
+    normals.push_back(triangleNormal(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
+  return normals;
+}
+
+std::vector<Vec3> vertexNormalsOf(const MeshData& mesh) {
+  return angleWeightedVertexNormals(mesh, triangleNormalsOf(mesh));
+}
+
+// The unit cube [0,1]^3, each face split by one diagonal, wound so that
+// (B - A) x (C - A) points outward. Corners on a face's diagonal see two 45°
+// triangles of it, the other corners one 90° triangle.
+MeshData unitCube() {
+  MeshData cube;
+  for (int i = 0; i < 8; ++i) cube.vertices.push_back(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  // Vertex index = x + 2y + 4z.
+  cube.triangles = {
+      {0, 2, 3}, {0, 3, 1},  // z = 0, normal -z
+      {4, 5, 7}, {4, 7, 6},  // z = 1, normal +z
+      {0, 1, 5}, {0, 5, 4},  // y = 0, normal -y
+      {2, 6, 7}, {2, 7, 3},  // y = 1, normal +y
+      {0, 4, 6}, {0, 6, 2},  // x = 0, normal -x
+      {1, 3, 7}, {1, 7, 5},  // x = 1, normal +x
+  };
+  return cube;
+}
+
+TEST(TriangleNormal, FollowsTheWindingRightHanded) {
+  const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 3, 0);
+  expectNear(triangleNormal(a, b, c), Vec3(0, 0, 1));
+  expectNear(triangleNormal(a, c, b), Vec3(0, 0, -1));
+}
+
+TEST(TriangleNormal, IsUnitLengthForAnyScale) {
+  expectNear(triangleNormal(Vec3(1e-6, 0, 0), Vec3(0, 1e-6, 0), Vec3(0, 0, 1e-6)),
+             Vec3(1.0 / std::sqrt(3.0)));
+  expectNear(triangleNormal(Vec3(1e6, 0, 0), Vec3(0, 1e6, 0), Vec3(0, 0, 1e6)),
+             Vec3(1.0 / std::sqrt(3.0)));
+}
+
+TEST(TriangleNormal, IsZeroNotNanForDegenerateTriangles) {
+  EXPECT_EQ(triangleNormal(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)), Vec3(0.0)) << "collinear";
+  EXPECT_EQ(triangleNormal(Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(0, 1, 0)), Vec3(0.0)) << "repeated";
+  EXPECT_EQ(triangleNormal(Vec3(4), Vec3(4), Vec3(4)), Vec3(0.0)) << "a point";
+}
+
+TEST(CornerAngles, SumToPiAndMatchARightTriangle) {
+  const Vec3 angles = cornerAngles(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  EXPECT_NEAR(angles[0], std::numbers::pi / 2, kTol);
+  EXPECT_NEAR(angles[1], std::numbers::pi / 4, kTol);
+  EXPECT_NEAR(angles[2], std::numbers::pi / 4, kTol);
+}
+
+TEST(VertexNormals, CubeTriangleNormalsPointOutward) {
+  const MeshData cube = unitCube();
+  const std::vector<Vec3> normals = triangleNormalsOf(cube);
+  for (std::size_t i = 0; i < cube.triangles.size(); ++i) {
+    const auto& t = cube.triangles[i];
+    const Vec3 centroid = (cube.vertices[t[0]] + cube.vertices[t[1]] + cube.vertices[t[2]]) / 3.0;
+    EXPECT_GT(glm::dot(normals[i], centroid - Vec3(0.5)), 0.0) << "triangle " << i;
+    EXPECT_NEAR(maxAbsComponent(normals[i]), 1.0, kTol) << "axis-aligned face, triangle " << i;
+  }
+}
+
+// Every cube corner meets three faces at 90° each, whether a face reaches it
+// with one 90° triangle or two 45° ones: the angle-weighted normal is the
+// diagonal. An unweighted average would lean toward the split faces.
+TEST(VertexNormals, CubeCornerIsTheDiagonalWhateverTheTriangulation) {
+  const MeshData cube = unitCube();
+  const std::vector<Vec3> normals = vertexNormalsOf(cube);
+  for (std::size_t v = 0; v < cube.vertices.size(); ++v)
+    expectNear(normals[v], glm::normalize(cube.vertices[v] - Vec3(0.5)));
+}
+
+TEST(VertexNormals, AFlatFanGivesEveryVertexThePlaneNormal) {
+  MeshData fan;
+  fan.vertices.push_back(Vec3(0, 0, 2));
+  constexpr int kSides = 7;  // unequal angles at the rim on purpose
+  for (int i = 0; i < kSides; ++i) {
+    const double a = 2 * std::numbers::pi * i / kSides + 0.1 * i * i;
+    fan.vertices.push_back(Vec3(std::cos(a), std::sin(a), 2));
+  }
+  for (std::uint32_t i = 0; i < kSides; ++i) fan.triangles.push_back({0, i + 1, (i + 1) % kSides + 1});
+  for (const Vec3& n : vertexNormalsOf(fan)) expectNear(n, Vec3(0, 0, 1));
+}
+
+TEST(VertexNormals, DegenerateTrianglesContributeNothingAndGiveNoNan) {
+  MeshData mesh;
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(5, 5, 5)};
+  mesh.triangles = {
+      {0, 1, 2},  // the real triangle, normal +z
+      {0, 1, 3},  // collinear: zero area
+      {1, 1, 2},  // a repeated corner
+      {4, 4, 4},  // a point, and the only triangle of vertex 4
+  };
+  const std::vector<Vec3> normals = vertexNormalsOf(mesh);
+  for (int v = 0; v < 3; ++v) expectNear(normals[v], Vec3(0, 0, 1));
+  EXPECT_EQ(normals[3], Vec3(0.0)) << "a vertex only on a degenerate triangle has no normal";
+  EXPECT_EQ(normals[4], Vec3(0.0));
+  for (const Vec3& n : normals) EXPECT_TRUE(isFinite(n));
+}
+
+// A triangle listed again, in any vertex order or winding, adds nothing:
+// the normals are those of the mesh without the repeats.
+TEST(VertexNormals, ATriangleListedTwiceCountsOnce) {
+  MeshData once;
+  once.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1), Vec3(1, 1, 0)};
+  once.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}};
+  MeshData repeated = once;
+  repeated.triangles.insert(repeated.triangles.begin() + 1, {2, 0, 1});  // rotated
+  repeated.triangles.push_back({3, 2, 0});                               // reversed
+  repeated.triangles.push_back({0, 1, 2});                               // a third copy
+  repeated.triangles.push_back({0, 1, 4});  // shares a corner set with no other
+  once.triangles.push_back({0, 1, 4});
+  const std::vector<Vec3> expected = vertexNormalsOf(once);
+  const std::vector<Vec3> normals = vertexNormalsOf(repeated);
+  ASSERT_EQ(normals.size(), expected.size());
+  for (std::size_t v = 0; v < normals.size(); ++v) EXPECT_EQ(normals[v], expected[v]) << v;
+}
+
+// The corner angles are taken in parallel, in chunks: a mesh larger than a
+// chunk must get the normals of the one-triangle-at-a-time sum, bit for bit.
+TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
+  MeshData grid;
+  constexpr std::uint32_t kSide = 200;  // 79,202 triangles
+  for (std::uint32_t y = 0; y < kSide; ++y)
+    for (std::uint32_t x = 0; x < kSide; ++x)
+      grid.vertices.push_back(Vec3(x, y, std::sin(0.3 * x) * std::cos(0.2 * y)));
+  for (std::uint32_t y = 0; y + 1 < kSide; ++y)
+    for (std::uint32_t x = 0; x + 1 < kSide; ++x) {
+      const std::uint32_t v = y * kSide + x;
+      grid.triangles.push_back({v, v + 1, v + kSide + 1});
+      grid.triangles.push_back({v, v + kSide + 1, v + kSide});
+    }
+  const std::vector<Vec3> triangleNormals = triangleNormalsOf(grid);
+  std::vector<Vec3> serial(grid.vertices.size(), Vec3(0.0));
+  for (std::size_t i = 0; i < grid.triangles.size(); ++i) {
+    const auto& t = grid.triangles[i];
+    const Vec3 w = cornerAngles(grid.vertices[t[0]], grid.vertices[t[1]], grid.vertices[t[2]]);
+    for (int k = 0; k < 3; ++k) serial[t[k]] += w[k] * triangleNormals[i];
+  }
+  const std::vector<Vec3> normals = angleWeightedVertexNormals(grid, triangleNormals);
+  for (std::size_t v = 0; v < normals.size(); ++v)
+    ASSERT_EQ(normals[v], serial[v] / glm::length(serial[v])) << v;
+}
+
+TEST(VertexNormals, WeighEachTriangleByItsAngleAtTheVertex) {
+  // Two triangles meet at vertex 0: one in the z = 0 plane with a 90° corner
+  // there, one in the x = 0 plane with a 45° corner.
+  MeshData mesh;
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1)};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const std::vector<Vec3> normals = vertexNormalsOf(mesh);
+  const Vec3 expected = glm::normalize(std::numbers::pi / 2 * Vec3(0, 0, 1) +
+                                       std::numbers::pi / 4 * Vec3(1, 0, 0));
+  expectNear(normals[0], expected);
+}
+
+TEST(Mesh, FlatMeshesComputeNoVertexNormals) {
+  const Mesh mesh("cube.off", unitCube(), Shading::Flat, Material{});
+  EXPECT_TRUE(mesh.vertexNormals().empty());
+  EXPECT_EQ(mesh.triangleNormals().size(), 12u);
+  expectNear(mesh.shadingNormal(0, 0.3, 0.3), Vec3(0, 0, -1));
+}
+
+TEST(Mesh, PhongMeshesInterpolateVertexNormals) {
+  const Mesh mesh("cube.off", unitCube(), Shading::Phong, Material{});
+  ASSERT_EQ(mesh.vertexNormals().size(), 8u);
+  // Triangle {0, 2, 3}: at its corner 0 (beta = gamma = 0) the shading
+  // normal is the vertex normal of corner 0.
+  expectNear(mesh.shadingNormal(0, 0.0, 0.0), glm::normalize(Vec3(-1, -1, -1)));
+  const Vec3 mid = mesh.shadingNormal(0, 0.5, 0.0);  // halfway from vertex 0 to vertex 2
+  expectNear(mid, glm::normalize(glm::normalize(Vec3(-1, -1, -1)) + glm::normalize(Vec3(-1, 1, -1))));
+}
+
+TEST(Mesh, SwitchingToPhongComputesTheVertexNormals) {
+  Mesh mesh("cube.off", unitCube(), Shading::Flat, Material{});
+  mesh.setShading(Shading::Phong);
+  EXPECT_EQ(mesh.vertexNormals().size(), 8u);
+}
+
+TEST(Mesh, BoundsAreTheBoxOfTheVertices) {
+  MeshData data;
+  data.vertices = {Vec3(1, -2, 3), Vec3(-4, 5, 0.5), Vec3(0, 0, -6)};
+  data.triangles = {{0, 1, 2}};
+  const Mesh mesh("t.off", data, Shading::Flat, Material{});
+  EXPECT_EQ(mesh.bounds().min, Vec3(-4, -2, -6));
+  EXPECT_EQ(mesh.bounds().max, Vec3(1, 5, 3));
+}
+
+}  // namespace
+}  // namespace meshtrace
