@@ -56,7 +56,9 @@ float roundUp(double x) {
 // Lanes x, y, z. The w lane of a primitive's box holds its index, whose bit
 // pattern is a denormal float: it is masked off before any arithmetic, which
 // would otherwise run into the (very slow) denormal assists.
-inline __m128 xyz(__m128 v) { return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0))); }
+inline __m128 xyz(__m128 v) {
+  return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+}
 
 // A box rounded outward to float, in SSE lanes x, y, z.
 struct FloatBox {
@@ -94,7 +96,8 @@ struct PrimRef {
   __m128 lo, hi;
   __m128 centroid2() const { return _mm_add_ps(xyz(lo), hi); }  // twice the centroid
   std::uint32_t index() const {
-    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_castps_si128(_mm_shuffle_ps(lo, lo, 3))));
+    return static_cast<std::uint32_t>(
+        _mm_cvtsi128_si32(_mm_castps_si128(_mm_shuffle_ps(lo, lo, 3))));
   }
 };
 
@@ -584,8 +587,9 @@ Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options) {
     boxes[k] = triangles.mesh(k).bounds();
     idOffset[k] = triangles.firstId(k);
   });
-  const Bvh top = buildBvh(boxes, {.bins = options.bins, .maxLeafSize = 1,
-                                   .nodeCost = options.nodeCost, .primitiveCost = 1.0});
+  const Bvh top = buildBvh(
+      boxes,
+      {.bins = options.bins, .maxLeafSize = 1, .nodeCost = options.nodeCost, .primitiveCost = 1.0});
   return join(top, parts, idOffset);
 }
 

@@ -37,8 +37,7 @@ void setChildOrders(Bvh8Node& node) {
   while (n < kBvhWidth && node.lo[0][n] <= node.hi[0][n]) ++n;
   double centre2[kBvhWidth][3];  // twice each used child's box centre
   for (int i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a)
-      centre2[i][a] = static_cast<double>(node.lo[a][i]) + node.hi[a][i];
+    for (int a = 0; a < 3; ++a) centre2[i][a] = static_cast<double>(node.lo[a][i]) + node.hi[a][i];
   const auto store = [&node](int octant, const int* slots) {
     std::uint32_t packed = 0;
     for (int k = 0; k < kBvhWidth; ++k) packed |= static_cast<std::uint32_t>(slots[k]) << (3 * k);

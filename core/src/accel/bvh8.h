@@ -28,7 +28,7 @@ struct alignas(64) Bvh8Node {
   std::uint8_t order[8][3];
 
   // The child order for octant `octant`, as 24 bits.
-  std::uint32_t childOrder(int octant) const {
+  [[gnu::always_inline]] std::uint32_t childOrder(int octant) const {
     const std::uint8_t* o = order[octant];
     return o[0] | static_cast<std::uint32_t>(o[1]) << 8 | static_cast<std::uint32_t>(o[2]) << 16;
   }

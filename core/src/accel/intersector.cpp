@@ -5,6 +5,7 @@
 
 #include "accel/primitive_query.h"
 #include "accel/scene_bvh.h"
+#include "util/lanes.h"
 
 namespace meshtrace {
 
@@ -36,63 +37,80 @@ SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& optio
 
 SceneIntersector::~SceneIntersector() = default;
 
-const SceneBvhStats* SceneIntersector::bvhStats() const {
-  return bvh_ ? &bvh_->stats() : nullptr;
+const SceneBvhStats* SceneIntersector::bvhStats() const { return bvh_ ? &bvh_->stats() : nullptr; }
+
+namespace {
+
+// Brute force: every primitive, in the order that defines ties
+// (primitive_query.h), a mesh's triangles only after its box with the aabb
+// method. Returns whether the search ended early.
+template <typename Search>
+bool bruteForce(const Scene& scene, AccelMethod accel, Search& search, Counters& counters) {
+  const auto shapes = [&](ObjectKind kind, std::size_t n) {
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (search.shape(kind, i)) return true;
+    return false;
+  };
+  if (shapes(ObjectKind::Sphere, scene.spheres.size()) ||
+      shapes(ObjectKind::Plane, scene.planes.size()) ||
+      shapes(ObjectKind::Cylinder, scene.cylinders.size()))
+    return true;
+  if (scene.meshes.empty()) return false;
+  const PrimitiveQuery& query = search.query();
+  const RayInverse inverse(query.ray());
+  for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    if (accel == AccelMethod::BoundingBox) {
+      ++counters.boxTests;
+      double tEnter, tExit;
+      if (!intersectSlabs(mesh.bounds(), inverse, query.tMin(), search.limit(), tEnter, tExit))
+        continue;
+    }
+    const auto count = static_cast<std::uint32_t>(mesh.triangles().size());
+    for (std::uint32_t t = 0; t < count; ++t)
+      if (search.triangle(m, t)) return true;
+  }
+  return false;
 }
 
-bool SceneIntersector::meshMayBeHit(std::uint32_t index, const RayInverse& inverse, double tMin,
-                                    double tMax, Counters& counters) const {
-  if (options_.accel != AccelMethod::BoundingBox) return true;
-  ++counters.boxTests;
-  double tEnter, tExit;
-  return intersectSlabs(scene_.meshes[index].bounds(), inverse, tMin, tMax, tEnter, tExit);
+}  // namespace
+
+template <typename Search>
+bool SceneIntersector::trace(Search& search, Counters& counters) const {
+  return bvh_ ? bvh_->trace(search, counters)
+              : bruteForce(scene_, options_.accel, search, counters);
 }
 
 bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
                                   const PrimitiveRef* start) const {
   if (external_) return external_->closestHit(ray, tMin, hit, counters);
-  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters, start);
-  ClosestHit closest(hit);
-  if (bvh_) {
-    bvh_->closestHit(query, closest, counters);
-    return closest.found();
-  }
-  // Brute force, in the order that defines ties (primitive_query.h).
-  for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i)
-    query.offerShape(ObjectKind::Sphere, i, closest);
-  for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
-    query.offerShape(ObjectKind::Plane, i, closest);
-  for (std::uint32_t i = 0; i < scene_.cylinders.size(); ++i)
-    query.offerShape(ObjectKind::Cylinder, i, closest);
-  if (!scene_.meshes.empty()) {
-    const RayInverse inverse(ray);
-    for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
-      if (!meshMayBeHit(m, inverse, tMin, hit.t, counters)) continue;
-      const auto count = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
-      for (std::uint32_t t = 0; t < count; ++t) query.offerTriangle(m, t, closest);
-    }
-  }
-  return closest.found();
+  ClosestHitSearch search(hit, scene_, ray, options_.triangle, tMin, counters, start);
+  trace(search, counters);
+  return search.found();
+}
+
+bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
+                                const PrimitiveRef* start) const {
+  if (external_) return external_->occluded(ray, tMin, tMax, counters);
+  AnyHitSearch search(tMax, scene_, ray, options_.triangle, tMin, counters, start);
+  return trace(search, counters);
 }
 
 void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
                                         Counters& counters, const PrimitiveRef* start,
                                         std::uint32_t active) const {
-  const auto leaving = [start](int r) { return start ? &start[r] : nullptr; };
+  const auto leaving = [start](std::size_t r) { return start ? &start[r] : nullptr; };
   if (!bvh_) {
     for (int r = 0; r < kPacketSize; ++r)
       found[r] = (active >> r & 1) && closestHit(rays[r], tMin, hits[r], counters, leaving(r));
     return;
   }
-  const PrimitiveQuery queries[kPacketSize] = {
-      {scene_, rays[0], options_.triangle, tMin, counters, leaving(0)},
-      {scene_, rays[1], options_.triangle, tMin, counters, leaving(1)},
-      {scene_, rays[2], options_.triangle, tMin, counters, leaving(2)},
-      {scene_, rays[3], options_.triangle, tMin, counters, leaving(3)}};
-  ClosestHit closest[kPacketSize] = {ClosestHit(hits[0]), ClosestHit(hits[1]),
-                                     ClosestHit(hits[2]), ClosestHit(hits[3])};
-  bvh_->closestHitPacket(queries, closest, active, counters);
-  for (int r = 0; r < kPacketSize; ++r) found[r] = (active >> r & 1) && closest[r].found();
+  auto searches = makeLanes<kPacketSize>([&](std::size_t r) {
+    return ClosestHitSearch(hits[r], scene_, rays[r], options_.triangle, tMin, counters,
+                            leaving(r));
+  });
+  bvh_->tracePacket(searches.data(), active, counters);
+  for (int r = 0; r < kPacketSize; ++r) found[r] = (active >> r & 1) && searches[r].found();
 }
 
 std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, const double* tMax,
@@ -106,38 +124,10 @@ std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, con
         blocked |= 1u << r;
     return blocked;
   }
-  const PrimitiveQuery queries[kPacketSize] = {
-      {scene_, rays[0], options_.triangle, tMin, counters, &start[0]},
-      {scene_, rays[1], options_.triangle, tMin, counters, &start[1]},
-      {scene_, rays[2], options_.triangle, tMin, counters, &start[2]},
-      {scene_, rays[3], options_.triangle, tMin, counters, &start[3]}};
-  return bvh_->occludedPacket(queries, tMax, active, counters);
-}
-
-bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
-                                const PrimitiveRef* start) const {
-  if (external_) return external_->occluded(ray, tMin, tMax, counters);
-  const PrimitiveQuery query(scene_, ray, options_.triangle, tMin, counters, start);
-  if (bvh_) return bvh_->occluded(query, tMax, counters);
-  const auto blocks = [&](ObjectKind kind, std::size_t n) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      if (query.shapeBlocks(kind, i, tMax)) return true;
-    return false;
-  };
-  if (blocks(ObjectKind::Sphere, scene_.spheres.size()) ||
-      blocks(ObjectKind::Plane, scene_.planes.size()) ||
-      blocks(ObjectKind::Cylinder, scene_.cylinders.size()))
-    return true;
-  if (!scene_.meshes.empty()) {
-    const RayInverse inverse(ray);
-    for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
-      if (!meshMayBeHit(m, inverse, tMin, tMax, counters)) continue;
-      const auto count = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
-      for (std::uint32_t t = 0; t < count; ++t)
-        if (query.triangleBlocks(m, t, tMax)) return true;
-    }
-  }
-  return false;
+  auto searches = makeLanes<kPacketSize>([&](std::size_t r) {
+    return AnyHitSearch(tMax[r], scene_, rays[r], options_.triangle, tMin, counters, &start[r]);
+  });
+  return bvh_->tracePacket(searches.data(), active, counters);
 }
 
 }  // namespace meshtrace

@@ -10,7 +10,9 @@
 // brute force tests first: spheres, planes, cylinders, meshes, each by index,
 // and within a mesh by triangle index.
 #include <optional>
+#include <utility>
 
+#include "accel/hit_kind.h"
 #include "meshtrace/geometry/scene.h"
 #include "meshtrace/geometry/triangle.h"
 #include "meshtrace/util/counters.h"
@@ -127,6 +129,59 @@ class PrimitiveQuery {
   Counters& counters_;
   // The triangle the ray starts on; no mesh has this many triangles.
   std::uint32_t startMesh_ = 0, startTriangle_ = 0xffffffffu;
+};
+
+// A query and what it does with each primitive it reaches, by the kind of
+// hit it looks for; each call answers whether the search is over. limit()
+// is the largest t still of interest: the closest hit's t so far, or the
+// fixed limit of an any-hit search. The traversals take the search alone,
+// its query inside it, so that a primitive's test reaches the ray in one
+// step.
+class ClosestHitSearch {
+ public:
+  static constexpr HitKind kKind = HitKind::Closest;
+  // Keeps the closest hit in `hit`, whose t on entry is a strict upper
+  // limit (ClosestHit); the query is made in place from `queryArgs`.
+  template <typename... QueryArgs>
+  explicit ClosestHitSearch(Hit& hit, QueryArgs&&... queryArgs)
+      : query_(std::forward<QueryArgs>(queryArgs)...), closest_(hit) {}
+
+  const PrimitiveQuery& query() const { return query_; }
+  bool found() const { return closest_.found(); }
+  const double& limit() const { return closest_.t(); }
+  bool shape(ObjectKind kind, std::uint32_t i) {
+    query_.offerShape(kind, i, closest_);
+    return false;
+  }
+  bool triangle(std::uint32_t mesh, std::uint32_t tri) {
+    query_.offerTriangle(mesh, tri, closest_);
+    return false;
+  }
+
+ private:
+  PrimitiveQuery query_;
+  ClosestHit closest_;
+};
+
+class AnyHitSearch {
+ public:
+  static constexpr HitKind kKind = HitKind::Any;
+  // Looks for a hit at tMin < t < tMax; the query is made in place from
+  // `queryArgs`.
+  template <typename... QueryArgs>
+  explicit AnyHitSearch(double tMax, QueryArgs&&... queryArgs)
+      : query_(std::forward<QueryArgs>(queryArgs)...), tMax_(tMax) {}
+
+  const PrimitiveQuery& query() const { return query_; }
+  const double& limit() const { return tMax_; }
+  bool shape(ObjectKind kind, std::uint32_t i) { return query_.shapeBlocks(kind, i, tMax_); }
+  bool triangle(std::uint32_t mesh, std::uint32_t tri) {
+    return query_.triangleBlocks(mesh, tri, tMax_);
+  }
+
+ private:
+  PrimitiveQuery query_;
+  double tMax_;
 };
 
 }  // namespace meshtrace

@@ -1,9 +1,18 @@
-// Building the scene's two-level BVH: object boxes and the triangle BVH.
+// The scene's two-level BVH: building it (object boxes, the triangle BVH)
+// and the one query of each width that both kinds of hit go through.
 #include "accel/scene_bvh.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <new>
+#include <type_traits>
+
+#include "accel/primitive_query.h"
+#include "accel/traverse.h"
+#include "util/lanes.h"
+#include "util/prefetch.h"
 
 namespace meshtrace {
 
@@ -32,6 +41,165 @@ void buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
   out.blocks = makeTriangleBlocks(out.triangles, out.frame, out.tree);
 }
 
+// Set bits of a 4-bit lane mask (std::popcount is a library call without
+// the popcnt instruction of later x86-64 levels).
+int laneCount(int mask) {
+  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCount[mask & 15];
+}
+
+// Where the triangles of a block live: their vertex-index rows and their
+// (scene mesh, triangle) references. A block holds triangles of one mesh
+// only (each mesh's tree is built on its own before the trees are joined,
+// binary_bvh.cpp), so the mesh is found once per block, not per lane:
+// straight off the set when there is one mesh, by a search of the set's
+// meshes otherwise.
+struct BlockMesh {
+  const TriangleIndices* rows;
+  const Vec3* vertexArray;
+  std::uint32_t sceneIndex;
+  std::uint32_t firstId;  // the set id of the mesh's triangle 0
+
+  const TriangleIndices* row(std::uint32_t id) const { return rows + (id - firstId); }
+  const Vec3* vertices() const { return vertexArray; }
+  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, sceneIndex, id - firstId}; }
+};
+
+// The one mesh's set ids are its triangle indices. Not a BlockMesh with
+// firstId 0: the compiler would keep the subtraction on every lane.
+class SoleMesh {
+ public:
+  explicit SoleMesh(const TriangleSet& set) {
+    const TriangleSet::Member first = set[0];
+    rows_ = first.mesh->triangles().data();
+    vertices_ = first.mesh->vertices().data();
+    sceneIndex_ = first.sceneIndex;
+  }
+  const SoleMesh& of(const TriangleBlock4&) const { return *this; }
+  const TriangleIndices* row(std::uint32_t id) const { return rows_ + id; }
+  const Vec3* vertices() const { return vertices_; }
+  PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, sceneIndex_, id}; }
+
+ private:
+  const TriangleIndices* rows_;
+  const Vec3* vertices_;
+  std::uint32_t sceneIndex_;
+};
+
+class ManyMeshes {
+ public:
+  explicit ManyMeshes(const TriangleSet& set) : set_(set) {}
+  BlockMesh of(const TriangleBlock4& block) const {
+    const TriangleSet::Member m = set_[block.id[0]];
+    return {m.mesh->triangles().data(), m.mesh->vertices().data(), m.sceneIndex,
+            block.id[0] - m.triangle};
+  }
+
+ private:
+  const TriangleSet& set_;
+};
+
+// Calls visit with the locator that fits `set` (see above).
+template <typename Visit>
+[[gnu::always_inline]] inline auto withLocator(const TriangleSet& set, Visit&& visit) {
+  return set.meshCount() == 1 ? visit(SoleMesh(set)) : visit(ManyMeshes(set));
+}
+
+// The lanes of the block that the float filter passes on to the exact test.
+// Every lane counts as one triangle test: those dropped here, the others in
+// the exact test.
+// The exact test starts by reading the triangle's vertex indices from its
+// mesh, a cache miss on a large mesh; asking for them before the filter
+// runs overlaps that wait with it.
+template <typename Mesh>
+int candidateLanes(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
+                   const Mesh& mesh, double tMin, double tMax, Counters& counters) {
+  for (std::uint32_t k = 0; k < n; ++k) prefetchLine(mesh.row(block.id[k]));
+  const int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
+  counters.triangleTests += n - laneCount(mask);
+  return mask;
+}
+
+// Calls exact(triangle) with the PrimitiveRef of each lane in `lanes` until
+// one call returns true.
+template <typename Mesh, typename Exact>
+bool forEachLane(const TriangleBlock4& block, int lanes,
+                                               const Mesh& mesh, Exact&& exact) {
+  for (; lanes; lanes &= lanes - 1)
+    if (exact(mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(lanes))]))) return true;
+  return false;
+}
+
+// Asks for the vertices of the lanes in `lanes`, so that the exact tests of
+// several lanes wait for them together, not in turn. Closest-hit packets on
+// large trees do this between filtering a block for all their rays and
+// testing (the rays of a quad mostly meet their hits in different
+// triangles); any-hit packets do not, since nearly all their candidates are
+// lanes the exact test rejects.
+template <typename Mesh>
+void prefetchVertices(const TriangleBlock4& block, int lanes, const Mesh& mesh) {
+  for (; lanes; lanes &= lanes - 1) {
+    const TriangleIndices& row = *mesh.row(block.id[__builtin_ctz(static_cast<unsigned>(lanes))]);
+    for (int c = 0; c < 3; ++c) prefetchObject(mesh.vertices()[row[c]]);
+  }
+}
+
+// candidateLanes, then the exact test of each, as above.
+template <typename Locate, typename Exact>
+[[gnu::always_inline]] inline bool forEachCandidate(const BlockRay& ray,
+                                                    const TriangleBlock4& block, std::uint32_t n,
+                                                    const Locate& locate, double tMin, double tMax,
+                                                    Counters& counters, Exact&& exact) {
+  const auto& mesh = locate.of(block);
+  return forEachLane(block, candidateLanes(ray, block, n, mesh, tMin, tMax, counters), mesh, exact);
+}
+
+// What the triangle BVH's traversals ask for ahead: a leaf's data is its
+// block.
+auto childPrefetch(const MeshBvh& bvh) {
+  const auto block = [blocks = bvh.blocks.data()](std::uint32_t b) { prefetchObject(blocks[b]); };
+  return bvh8::PrefetchChildren<decltype(block)>(bvh.prefetch, block);
+}
+
+// The triangle BVH's BlockRay, made when the ray first reaches one of its
+// blocks: most rays that miss the meshes never do. (std::optional is not
+// used because GCC zero-fills its storage up front with `rep stos`, which
+// costs more than the set-up itself.)
+class LazyBlockRay {
+ public:
+  LazyBlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel)
+      : ray_(ray), frame_(frame), kernel_(kernel) {}
+  [[gnu::always_inline]] const BlockRay& get() {
+    if (!made_) {
+      new (storage_) BlockRay(ray_, frame_, kernel_);
+      made_ = true;
+    }
+    return *std::launder(reinterpret_cast<const BlockRay*>(storage_));
+  }
+
+ private:
+  static_assert(std::is_trivially_destructible_v<BlockRay>);
+  const Ray& ray_;
+  const BlockFrame& frame_;
+  TriangleKernel kernel_;
+  bool made_ = false;
+  alignas(BlockRay) unsigned char storage_[sizeof(BlockRay)];
+};
+
+// A packet's LazyBlockRays, one per ray.
+class PacketBlockRays {
+ public:
+  template <typename Search>
+  PacketBlockRays(const Search* searches, const BlockFrame& frame)
+      : rays_(makeLanes<kPacketSize>([&](std::size_t r) {
+          const PrimitiveQuery& query = searches[r].query();
+          return LazyBlockRay(query.ray(), frame, query.kernel());
+        })) {}
+  [[gnu::always_inline]] const BlockRay& get(int r) { return rays_[r].get(); }
+
+ private:
+  std::array<LazyBlockRay, kPacketSize> rays_;
+};
 }  // namespace
 
 SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(scene) {
@@ -84,5 +252,176 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
   stats_.buildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// Queries. The leaf work of both levels is forced inline (GCC and Clang
+// take the attribute after a lambda's parameters), as the traversals are:
+// as calls, each with its prologue and its own copy of the box ray, the
+// queries run measurably slower.
+#define MESHTRACE_INLINE_LEAF __attribute__((always_inline))
+
+[[gnu::always_inline]] inline SlabRay SceneBvh::slabRay(const PrimitiveQuery& query) const {
+  // One call per precision, so that each folds its padding's constants into
+  // SlabRay's scale factors rather than working them out for every ray.
+  const Ray& ray = query.ray();
+  if (query.kernel().precision == Precision::Single)
+    return SlabRay(ray, slabPadding(true, ray.origin, sceneScale_));
+  return SlabRay(ray, slabPadding(false, ray.origin, sceneScale_));
+}
+
+template <typename Search>
+[[gnu::always_inline]] inline bool SceneBvh::tracePlanes(Search& search) const {
+  for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
+    if (search.shape(ObjectKind::Plane, i)) return true;
+  return false;
+}
+
+template <typename Search>
+bool SceneBvh::trace(Search& search, Counters& counters) const {
+  return traceBounded(slabRay(search.query()), search, counters);
+}
+
+template <typename Search>
+bool SceneBvh::traceBounded(const SlabRay& ray, Search& search, Counters& counters) const {
+  constexpr HitKind kKind = Search::kKind;
+  const PrimitiveQuery& query = search.query();
+  if (tracePlanes(search)) return true;
+  const double tMin = query.tMin();
+  std::uint64_t visits = 0;
+  // A top-level leaf's mesh: a small one triangle by triangle, or the
+  // triangle BVH.
+  const auto meshLeaf = [&](std::uint32_t mesh) MESHTRACE_INLINE_LEAF {
+    if (mesh != kMeshBvh) {
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
+      for (std::uint32_t t = 0; t < count; ++t)
+        if (search.triangle(mesh, t)) return true;
+      return false;
+    }
+    const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
+      const auto blockLeaf = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
+        return forEachCandidate(
+            blockRay.get(), meshBvh_.blocks[block], n, locate, tMin, search.limit(), counters,
+            [&](const PrimitiveRef& t) { return search.triangle(t.object, t.triangle); });
+      };
+      return traverse<kKind>(meshBvh_.tree, ray, tMin, search.limit(), visits, blockLeaf,
+                             childPrefetch(meshBvh_));
+    };
+    return withLocator(meshBvh_.triangles, traverseMeshes);
+  };
+  const auto objectLeaf = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
+    for (std::uint32_t k = first; k < first + n; ++k) {
+      const Object& o = objects_[top_.order[k]];
+      if (o.kind == ObjectKind::Mesh ? meshLeaf(o.index) : search.shape(o.kind, o.index))
+        return true;
+    }
+    return false;
+  };
+  const bool ended = traverse<kKind>(top_, ray, tMin, search.limit(), visits, objectLeaf);
+  counters.nodeVisits += visits;
+  return ended;
+}
+
+template <typename Search>
+std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
+                                    Counters& counters) const {
+  constexpr HitKind kKind = Search::kKind;
+  if (active == 0) return 0;
+  const auto slab =
+      makeLanes<kPacketSize>([&](std::size_t r) { return slabRay(searches[r].query()); });
+  std::uint32_t ended = 0;
+  if constexpr (kKind == HitKind::Closest) {
+    // The closest-hit traversal orders children by one octant: rays of
+    // different octants go one by one.
+    const int lead = __builtin_ctz(active);
+    for (int r = 0; r < kPacketSize; ++r)
+      if (active >> r & 1 && slab[r].octant != slab[lead].octant) {
+        for (int k = 0; k < kPacketSize; ++k)
+          if (active >> k & 1 && traceBounded(slab[k], searches[k], counters)) ended |= 1u << k;
+        return ended;
+      }
+  }
+  for (int r = 0; r < kPacketSize; ++r)
+    if (active >> r & 1 && tracePlanes(searches[r])) ended |= 1u << r;
+  active &= ~ended;
+  if (active == 0) return ended;
+  double tMin[kPacketSize];
+  const double* tLimit[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) {
+    tMin[r] = searches[r].query().tMin();
+    tLimit[r] = &searches[r].limit();
+  }
+  std::uint64_t visits = 0;
+  // As in traceBounded, for the rays named in `rays`; returns those whose
+  // search ended.
+  const auto meshLeaf = [&](std::uint32_t mesh, std::uint32_t rays) MESHTRACE_INLINE_LEAF {
+    std::uint32_t done = 0;
+    if (mesh != kMeshBvh) {
+      const auto count = static_cast<std::uint32_t>(scene_.meshes[mesh].triangles().size());
+      for (int r = 0; r < kPacketSize; ++r)
+        if (rays >> r & 1)
+          for (std::uint32_t t = 0; t < count; ++t)
+            if (searches[r].triangle(mesh, t)) {
+              done |= 1u << r;
+              break;
+            }
+      return done;
+    }
+    const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
+      PacketBlockRays blockRay(searches, meshBvh_.frame);
+      const auto blockLeaf = [&](std::uint32_t index, std::uint32_t n,
+                                 std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
+        const TriangleBlock4& block = meshBvh_.blocks[index];
+        const auto& mesh = locate.of(block);
+        // Every ray's filter first, then the exact tests.
+        int lanes[kPacketSize] = {};
+        int any = 0;
+        for (int r = 0; r < kPacketSize; ++r) {
+          if (!(meeting >> r & 1)) continue;
+          lanes[r] = candidateLanes(blockRay.get(r), block, n, mesh, tMin[r], searches[r].limit(),
+                                    counters);
+          any |= lanes[r];
+        }
+        if (kKind == HitKind::Closest && meshBvh_.prefetch) prefetchVertices(block, any, mesh);
+        std::uint32_t now = 0;
+        for (int r = 0; r < kPacketSize; ++r) {
+          Search& search = searches[r];
+          if (forEachLane(block, lanes[r], mesh, [&](const PrimitiveRef& t) {
+                return search.triangle(t.object, t.triangle);
+              }))
+            now |= 1u << r;
+        }
+        return now;
+      };
+      return traversePacket<kKind>(meshBvh_.tree, slab.data(), tMin, tLimit, rays, visits,
+                                   blockLeaf, childPrefetch(meshBvh_));
+    };
+    return withLocator(meshBvh_.triangles, traverseMeshes);
+  };
+  const auto objectLeaf = [&](std::uint32_t first, std::uint32_t n, std::uint32_t rays)
+                              MESHTRACE_INLINE_LEAF {
+                                std::uint32_t open = rays;
+                                for (std::uint32_t k = first; k < first + n && open; ++k) {
+                                  const Object& o = objects_[top_.order[k]];
+                                  if (o.kind == ObjectKind::Mesh) {
+                                    open &= ~meshLeaf(o.index, open);
+                                  } else {
+                                    for (int r = 0; r < kPacketSize; ++r)
+                                      if (open >> r & 1 && searches[r].shape(o.kind, o.index))
+                                        open &= ~(1u << r);
+                                  }
+                                }
+                                return rays & ~open;
+                              };
+  ended |= traversePacket<kKind>(top_, slab.data(), tMin, tLimit, active, visits, objectLeaf);
+  counters.nodeVisits += visits;
+  return ended;
+}
+
+#undef MESHTRACE_INLINE_LEAF
+
+template bool SceneBvh::trace(ClosestHitSearch&, Counters&) const;
+template bool SceneBvh::trace(AnyHitSearch&, Counters&) const;
+template std::uint32_t SceneBvh::tracePacket(ClosestHitSearch*, std::uint32_t, Counters&) const;
+template std::uint32_t SceneBvh::tracePacket(AnyHitSearch*, std::uint32_t, Counters&) const;
 
 }  // namespace meshtrace

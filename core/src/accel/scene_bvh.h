@@ -17,8 +17,7 @@
 #include <vector>
 
 #include "accel/bvh8.h"
-#include "accel/traverse.h"
-#include "accel/traverse_packet.h"
+#include "accel/slab_ray.h"
 #include "accel/triangle_block.h"
 #include "accel/triangle_set.h"
 #include "meshtrace/accel/bvh_stats.h"
@@ -28,7 +27,6 @@
 
 namespace meshtrace {
 
-class ClosestHit;
 class PrimitiveQuery;
 
 // The BVH over the triangles of a set of meshes: 8-wide nodes whose leaves
@@ -50,22 +48,19 @@ class SceneBvh {
  public:
   SceneBvh(const Scene& scene, const SceneBvhOptions& options = {});
 
-  // Offers every primitive the ray may hit to `closest` (see primitive_query.h).
-  void closestHit(const PrimitiveQuery& query, ClosestHit& closest, Counters& counters) const;
-  // closestHit for the rays of a packet named in `active` (bit r:
-  // queries[r], offering to closest[r]); the same hits as a closestHit call
-  // for each. The queries of inactive rays are still read (give them any
-  // ray, best one of an active ray's octant).
-  void closestHitPacket(const PrimitiveQuery* queries, ClosestHit* closest, std::uint32_t active,
-                        Counters& counters) const;
-  // True if some primitive is hit at tMin < t < tMax.
-  bool occluded(const PrimitiveQuery& query, double tMax, Counters& counters) const;
-
-  // occluded for the rays of a packet named in `active` (bit r: queries[r],
-  // limit tMax[r]); returns those blocked. The queries of inactive rays are
-  // still read (give them any ray). The same answers as occluded gives.
-  std::uint32_t occludedPacket(const PrimitiveQuery* queries, const double* tMax,
-                               std::uint32_t active, Counters& counters) const;
+  // Offers every primitive the search's ray may hit to `search`, a
+  // ClosestHitSearch or an AnyHitSearch (primitive_query.h), until the
+  // search is over; returns whether it ended early (an any-hit search found
+  // a blocker).
+  template <typename Search>
+  bool trace(Search& search, Counters& counters) const;
+  // trace() for the searches of a packet named in `active` (bit r:
+  // searches[r]), with the same outcome as a trace() of each; returns those
+  // that ended early. Closest-hit rays are traced together where they share
+  // an octant of directions, any-hit rays always. The searches of inactive
+  // rays are still read (give them an active ray's).
+  template <typename Search>
+  std::uint32_t tracePacket(Search* searches, std::uint32_t active, Counters& counters) const;
 
   const SceneBvhStats& stats() const { return stats_; }
   // The triangle BVH, over the meshes large enough for one.
@@ -76,9 +71,12 @@ class SceneBvh {
 
  private:
   SlabRay slabRay(const PrimitiveQuery& query) const;
-  // closestHit with the query's slab ray already made.
-  void closestHit(const PrimitiveQuery& query, const SlabRay& ray, ClosestHit& closest,
-                  Counters& counters) const;
+  // The infinite planes, which have no box: tested before the tree.
+  template <typename Search>
+  bool tracePlanes(Search& search) const;
+  // trace() with the ray's slab ray already made.
+  template <typename Search>
+  bool traceBounded(const SlabRay& ray, Search& search, Counters& counters) const;
 
   struct Object {
     ObjectKind kind;

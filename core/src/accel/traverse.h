@@ -1,175 +1,38 @@
 #pragma once
-// Traversal of a Bvh8: two SSE slab tests per node check all eight child
-// boxes in float. Closest hit visits the children a ray meets in the order
-// its node keeps for the ray's octant; any-hit stops at the first blocker.
-// The leaf work is a callback, as in the binary BVH.
+// Traversal of a Bvh8, written once per width: traverse() for one ray and
+// traversePacket() for kPacketSize rays, each for either kind of hit
+// (HitKind). Two SSE slab tests per node check all eight child boxes in
+// float (slab_ray.h). The leaf work is a callback; it answers whether the
+// search is over, so the same loop serves closest hits (never over before the
+// tree is) and any hit (over at the first blocker).
+//
+// Closest hits visit the children a ray meets in the order its node keeps
+// for the ray's octant (Bvh8Node::order), nearest first, instead of sorting
+// their entry distances: the fixed order costs no branch that depends on the
+// ray. Any-hit searches take the children in slot order and test the leaves
+// among them at once, since any blocker will do.
+//
+// Every traversal, packets included, tests each ray's boxes with its own
+// conservative slab test and calls the leaves each ray alone would reach (at
+// least), so a packet finds the hits each of its rays would find alone. What
+// a packet saves is the chain of dependent node visits that bounds a single
+// ray (a node load, the slab test, the choice of the next node): the four
+// rays' tests of a node are independent and overlap.
 #include <emmintrin.h>
 #include <xmmintrin.h>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstddef>
 #include <cstdint>
 #include <limits>
 
 #include "accel/bvh8.h"
+#include "accel/hit_kind.h"
 #include "accel/slab_ray.h"
+#include "meshtrace/accel/intersector.h"
 #include "util/prefetch.h"
 
 namespace meshtrace {
 
-// The ray prepared for float slab tests that stay conservative: every box is
-// tested as if widened by pad.absolute, with the distances scaled by
-// 1 -/+ pad.relative (bvh_ray.h), whatever the float rounding does. The
-// set-up runs in float on all three axes at once (u = 2^-24 below):
-// - The origin is moved toward the far plane for the near distance (and the
-//   other way for the far one) by shift = a + 2^-21 |o|, a = pad.absolute
-//   (1 + 2^-20) rounded to float (2^-21 |o| is exact, a power of two).
-//   Converting o and a, adding to form shift and adding it to o lose at most
-//   2u |o| + 3u a; the 8u |o| and 16u a in shift cover that, so the float
-//   origin is still on the widened side.
-// - A reciprocal goes through five roundings (direction to float, the
-//   division, the scale factor, the subtraction and the product of the slab
-//   test), a relative error below 5u < 2^-21; the scale factors carry 2^-19
-//   beyond pad.relative, which covers it with room for the factor's own
-//   rounding (2^-24).
-// - A zero or tiny component gets reciprocal +-1e30 rather than inf, so that
-//   (plane - origin) * reciprocal is never 0 * inf = NaN.
-class SlabRay {
- public:
-  SlabRay(const Ray& ray, const SlabPadding& pad) {
-    const __m128 signBit = _mm_set1_ps(-0.0f);
-    const __m128 o = toFloats(ray.origin), d = toFloats(ray.direction);
-    const __m128 dSign = _mm_and_ps(d, signBit);
-    const __m128 absD = _mm_max_ps(_mm_andnot_ps(signBit, d), _mm_set1_ps(1e-30f));
-    const __m128 inv = _mm_or_ps(_mm_div_ps(_mm_set1_ps(1.0f), absD), dSign);
-    const __m128 absShift =
-        _mm_add_ps(_mm_set1_ps(static_cast<float>(pad.absolute * (1.0 + 0x1p-20))),
-                   _mm_mul_ps(_mm_set1_ps(0x1p-21f), _mm_andnot_ps(signBit, o)));
-    const __m128 shift = _mm_or_ps(absShift, dSign);  // toward the far plane
-    originNear = _mm_add_ps(o, shift);
-    originFar = _mm_sub_ps(o, shift);
-    invNear = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 - pad.relative - 0x1p-19)));
-    invFar = _mm_mul_ps(inv, _mm_set1_ps(static_cast<float>(1.0 + pad.relative + 0x1p-19)));
-    // By the reciprocal's sign, so that -0.0 goes with the negative side,
-    // as its reciprocal does.
-    negative_ = _mm_cmplt_ps(invNear, _mm_setzero_ps());
-    octant = _mm_movemask_ps(negative_) & 7;
-  }
-
-  // Whether the ray meets the widened box lo-hi within [tMin, tMax]: the
-  // node test's arithmetic with the three axes side by side (lo and hi are
-  // (x, y, z, z)), for a tree whose root is a leaf.
-  bool meets(const float* lo, const float* hi, float tMin, float tMax) const {
-    const __m128 low = _mm_load_ps(lo), high = _mm_load_ps(hi);
-    const __m128 nearPlane = _mm_or_ps(_mm_and_ps(negative_, high), _mm_andnot_ps(negative_, low));
-    const __m128 farPlane = _mm_or_ps(_mm_and_ps(negative_, low), _mm_andnot_ps(negative_, high));
-    __m128 enter = _mm_mul_ps(_mm_sub_ps(nearPlane, originNear), invNear);
-    __m128 exit = _mm_mul_ps(_mm_sub_ps(farPlane, originFar), invFar);
-    enter = _mm_max_ps(enter, _mm_shuffle_ps(enter, enter, 0x4e));
-    enter = _mm_max_ps(enter, _mm_shuffle_ps(enter, enter, 0xb1));
-    exit = _mm_min_ps(exit, _mm_shuffle_ps(exit, exit, 0x4e));
-    exit = _mm_min_ps(exit, _mm_shuffle_ps(exit, exit, 0xb1));
-    const float in = _mm_cvtss_f32(enter), out = _mm_cvtss_f32(exit);
-    return in <= out && in <= tMax && tMin <= out;
-  }
-
-  // Lanes x, y, z (w: a copy of z, harmless in the reductions above).
-  __m128 originNear, originFar, invNear, invFar;
-  int octant;  // the direction's signs: bit a set if d[a] < 0
-
- private:
-  // (x, y, z, z) in float.
-  static __m128 toFloats(const Vec3& v) {
-    const __m128 z = _mm_cvtpd_ps(_mm_load1_pd(&v[2]));
-    return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&v[0])), z);
-  }
-
-  __m128 negative_;  // lanes whose direction component is negative
-};
-
-// The slab ray with each axis splatted over four lanes, for the node test.
-// Made when a traversal reaches its first node: a ray that misses a tree
-// whose root is a leaf never needs it.
-class BoxRay8 {
- public:
-  explicit BoxRay8(const SlabRay& ray) : octant_(ray.octant) {
-    splat(ray.originNear, originNear_);
-    splat(ray.originFar, originFar_);
-    splat(ray.invNear, invNear_);
-    splat(ray.invFar, invFar_);
-    // The near and far planes of each axis in a node, by the direction's
-    // signs, so that the slab test picks them without a branch.
-    const auto& planes = kPlaneOffsets[octant_];
-    std::copy(planes.begin(), planes.end(), planeOffset_);
-  }
-
-  int octant() const { return octant_; }
-
-  // Bit i set if the ray meets child i's widened box within [tMin, tMax];
-  // tEnter[i] receives its entry distance. Children 0-3 and 4-7 are tested
-  // side by side, two independent chains of the same length as one.
-  unsigned intersect(const Bvh8Node& node, __m128 tMin, __m128 tMax, float* tEnter) const {
-    __m128 enterLow = tMin, enterHigh = tMin, exitLow = tMax, exitHigh = tMax;
-    const char* base = reinterpret_cast<const char*>(&node);
-    const auto slab = [](const float* plane, __m128 origin, __m128 inv, __m128& low,
-                         __m128& high) {
-      low = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(plane), origin), inv);
-      high = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(plane + 4), origin), inv);
-    };
-    for (int a = 0; a < 3; ++a) {
-      __m128 low, high;
-      slab(reinterpret_cast<const float*>(base + planeOffset_[a]), originNear_[a], invNear_[a],
-           low, high);
-      enterLow = _mm_max_ps(enterLow, low);
-      enterHigh = _mm_max_ps(enterHigh, high);
-      slab(reinterpret_cast<const float*>(base + planeOffset_[3 + a]), originFar_[a], invFar_[a],
-           low, high);
-      exitLow = _mm_min_ps(exitLow, low);
-      exitHigh = _mm_min_ps(exitHigh, high);
-    }
-    _mm_store_ps(tEnter, enterLow);
-    _mm_store_ps(tEnter + 4, enterHigh);
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(enterLow, exitLow)) |
-                                 _mm_movemask_ps(_mm_cmple_ps(enterHigh, exitHigh)) << 4);
-  }
-
- private:
-  static void splat(__m128 xyz, __m128 out[3]) {
-    out[0] = _mm_shuffle_ps(xyz, xyz, 0x00);
-    out[1] = _mm_shuffle_ps(xyz, xyz, 0x55);
-    out[2] = _mm_shuffle_ps(xyz, xyz, 0xaa);
-  }
-
-  // Byte offsets in a Bvh8Node of the near planes (x, y, z), then the far
-  // ones, for each sign pattern of the direction (bit a: d[a] < 0).
-  static constexpr auto kPlaneOffsets = [] {
-    std::array<std::array<std::uint32_t, 6>, 8> table{};
-    for (int signs = 0; signs < 8; ++signs)
-      for (int a = 0; a < 3; ++a) {
-        const std::size_t axis = a * kBvhWidth * sizeof(float);
-        const auto lo = static_cast<std::uint32_t>(offsetof(Bvh8Node, lo) + axis);
-        const auto hi = static_cast<std::uint32_t>(offsetof(Bvh8Node, hi) + axis);
-        const bool flip = (signs >> a) & 1;
-        table[signs][a] = flip ? hi : lo;
-        table[signs][3 + a] = flip ? lo : hi;
-      }
-    return table;
-  }();
-
-  __m128 originNear_[3], originFar_[3], invNear_[3], invFar_[3];
-  std::uint32_t planeOffset_[6];
-  int octant_;
-};
-
 namespace bvh8 {
-
-// A float no smaller than t (t * (1 + 2^-23) is above t by at least half a
-// float ulp, so rounding to nearest cannot fall below t); inf stays inf.
-inline float atLeast(double t) { return static_cast<float>(t * (1.0 + 0x1p-23)); }
-inline float atMost(double t) { return t <= 0.0 ? static_cast<float>(t * (1.0 + 0x1p-23))
-                                                : static_cast<float>(t * (1.0 - 0x1p-23)); }
 
 struct Entry {
   std::uint32_t first, count;  // a node (count 0) or a leaf's primitive range
@@ -189,7 +52,8 @@ struct NoPrefetch {
 // children in `mask`, before the traversal branches on them: on a tree far
 // larger than the caches, each visit otherwise waits for memory in turn, and
 // a mispredicted branch delays the next load further. Whether it pays is a
-// matter of the tree's size (scene_bvh.h), so it is switched at run time.
+// matter of the tree's size (kPrefetchBvhBytes), so it is switched at run
+// time.
 template <typename LeafData>
 class PrefetchChildren {
  public:
@@ -216,8 +80,9 @@ class PrefetchChildren {
 // (Bvh8Node::childOrder), then pops and returns the nearest. Every slot is
 // written and the top moves only past the children hit, so neither the
 // number hit nor their distances cost a branch.
-inline Entry pushInOrder(const Bvh8Node& node, unsigned mask, std::uint32_t childOrder,
-                         const float* tEnter, Entry* stack, int& top) {
+[[gnu::always_inline]] inline Entry pushInOrder(const Bvh8Node& node, unsigned mask,
+                                                std::uint32_t childOrder, const float* tEnter,
+                                                Entry* stack, int& top) {
 #pragma GCC unroll 8
   for (int k = kBvhWidth - 1; k >= 0; --k) {
     const unsigned slot = childOrder >> (3 * k) & 7;
@@ -227,30 +92,53 @@ inline Entry pushInOrder(const Bvh8Node& node, unsigned mask, std::uint32_t chil
   return stack[--top];
 }
 
+// A postponed child of a packet's traversal. Its rays are kept as the node
+// test's result shifted right by the child's slot (bit 8r: ray r meets it)
+// and gathered only when it is popped: a push writes all eight slots, met
+// or not, and gathering the rays of each there costs more than the pops.
+struct PacketEntry {
+  std::uint32_t first, count;  // as Entry
+  float tEnter;                // the nearest entry among the packet's rays
+  std::uint32_t meets;         // bit 8r: ray r meets the box
+};
+
+// The rays of a PacketEntry's `meets` (bit r: ray r). The multiply gathers
+// bits 0, 8, 16 and 24 into bits 28-31; no two of the partial products land
+// on the same bit, so nothing carries.
+[[gnu::always_inline]] inline std::uint32_t raysOf(std::uint32_t meets) {
+  const std::uint64_t bits = meets & 0x01010101u;
+  return static_cast<std::uint32_t>((bits * 0x10204080u) >> 28) & 0xfu;
+}
+
+// atLeast of the four rays' limits, lane r for ray r: the same double
+// product and rounding to float, two rays at a time.
+[[gnu::always_inline]] inline __m128 atLeast4(const double* const* t) {
+  static_assert(kPacketSize == 4, "one SSE lane per ray");
+  const __m128d up = _mm_set1_pd(1.0 + 0x1p-23);
+  const __m128 low = _mm_cvtpd_ps(_mm_mul_pd(_mm_set_pd(*t[1], *t[0]), up));
+  const __m128 high = _mm_cvtpd_ps(_mm_mul_pd(_mm_set_pd(*t[3], *t[2]), up));
+  return _mm_movelh_ps(low, high);
+}
+
 }  // namespace bvh8
 
 // Calls leaf(first, count) for the leaves whose boxes the ray meets at
-// tMin <= t <= tBest, nearer boxes first as the nodes' octant orders
-// estimate them. The leaf may lower tBest (it is read again after every
-// call); a box entered exactly at tBest is still visited, so that a later
-// primitive at the same distance can win a tie. `prefetch` is shown each
-// node's children met before they are taken (NoPrefetch, PrefetchChildren).
-// Sorting the children by entry distance instead takes branches that depend
-// on each ray's data: measured on fandisk's hitting primary rays, the
-// traversal alone took 139 ns with an insertion sort of the children hit
-// and 95 ns with this fixed order, for the same 5.3 node visits.
-// (Both traversals are forced inline: see scene_bvh_query.cpp.)
-template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
-[[gnu::always_inline]] inline void traverseClosest(const Bvh8& bvh, const SlabRay& slab,
-                                                   double tMin, const double& tBest,
-                                                   std::uint64_t& visits, Leaf&& leaf,
-                                                   const Prefetch& prefetch = {}) {
-  if (bvh.empty()) return;
-  if (bvh.nodes.empty()) {
-    if (slab.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tBest)))
-      leaf(0, bvh.rootCount);
-    return;
-  }
+// tMin <= t <= tLimit until one returns true, and returns whether one did.
+// Closest: nearer boxes first; the leaf may lower tLimit (it is read again
+// after every call), and a box entered exactly at tLimit is still visited,
+// so that a later primitive at the same distance can win a tie. Any: the
+// first leaf that returns true ends it. `prefetch` is shown each node's
+// children met before they are taken (NoPrefetch, PrefetchChildren).
+// (The traversals are forced inline into the queries, with their leaf
+// callbacks: see scene_bvh.cpp.)
+template <HitKind kKind, typename Leaf, typename Prefetch = bvh8::NoPrefetch>
+[[gnu::always_inline]] inline bool traverse(const Bvh8& bvh, const SlabRay& slab, double tMin,
+                                            const double& tLimit, std::uint64_t& visits,
+                                            Leaf&& leaf, const Prefetch& prefetch = {}) {
+  if (bvh.empty()) return false;
+  if (bvh.nodes.empty())
+    return slab.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tLimit)) &&
+           leaf(0, bvh.rootCount);
   const BoxRay8 ray(slab);
   bvh8::Entry stack[bvh8::kStackSize];
   int top = 0;
@@ -259,17 +147,28 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
   const Bvh8Node* nodes = bvh.nodes.data();
   std::uint64_t visited = 0;
   const __m128 tMinV = _mm_set1_ps(bvh8::atMost(tMin));
-  float tMax = bvh8::atLeast(tBest);  // refreshed after every leaf
-  bvh8::Entry next{0, 0, 0.0f};       // the root
+  float tMax = bvh8::atLeast(tLimit);  // closest hits: refreshed after every leaf
+  bool found = false;
+  bvh8::Entry next{0, 0, 0.0f};  // the root
   for (;;) {
     if (next.count == 0) {
-      // An interior node: continue with its nearest child hit, if any.
       const Bvh8Node& node = nodes[next.first];
       ++visited;
       alignas(16) float tEnter[kBvhWidth];
-      const unsigned mask = ray.intersect(node, tMinV, _mm_set1_ps(tMax), tEnter);
+      unsigned mask = ray.intersect(node, tMinV, _mm_set1_ps(tMax), tEnter);
       prefetch(nodes, node, mask);
-      if (mask) {
+      if constexpr (kKind == HitKind::Any) {
+        // The leaves met are tested at once; inner children wait.
+        for (; mask && !found; mask &= mask - 1) {
+          const int i = __builtin_ctz(mask);
+          if (node.count[i] == 0)
+            stack[top++] = {node.first[i], 0, 0.0f};
+          else
+            found = leaf(node.first[i], node.count[i]);
+        }
+        if (found) break;
+      } else if (mask) {
+        // Continue with the nearest child met.
         if ((mask & (mask - 1)) == 0) {
           const int i = __builtin_ctz(mask);
           next = {node.first[i], node.count[i], 0.0f};
@@ -279,58 +178,147 @@ template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
         continue;
       }
     } else {
+      // Only closest-hit searches postpone leaves.
       leaf(next.first, next.count);
-      tMax = bvh8::atLeast(tBest);
+      tMax = bvh8::atLeast(tLimit);
     }
-    // Resume with the nearest postponed child that may still hold a hit.
+    // Resume with the nearest postponed child that may still hold a hit
+    // (for an any-hit search, any postponed child).
     do {
       if (top == 0) {
         visits += visited;
-        return;
+        return found;
       }
       next = stack[--top];
-    } while (next.tEnter > tMax);
-  }
-}
-
-// Calls blocked(first, count) for the leaves whose boxes the ray meets at
-// tMin <= t <= tMax until one returns true; returns whether one did.
-// `prefetch` as for traverseClosest.
-template <typename Leaf, typename Prefetch = bvh8::NoPrefetch>
-[[gnu::always_inline]] inline bool traverseAny(const Bvh8& bvh, const SlabRay& slab, double tMin,
-                                               double tMax, std::uint64_t& visits,
-                                               Leaf&& blocked, const Prefetch& prefetch = {}) {
-  if (bvh.empty()) return false;
-  if (bvh.nodes.empty())
-    return slab.meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin), bvh8::atLeast(tMax)) &&
-           blocked(0, bvh.rootCount);
-  const BoxRay8 ray(slab);
-  std::uint32_t stack[bvh8::kStackSize];
-  int top = 0;
-  stack[top++] = 0;
-  const Bvh8Node* nodes = bvh.nodes.data();
-  std::uint64_t visited = 0;
-  const __m128 tMinV = _mm_set1_ps(bvh8::atMost(tMin));
-  const __m128 tMaxV = _mm_set1_ps(bvh8::atLeast(tMax));
-  bool found = false;
-  while (top > 0 && !found) {
-    const Bvh8Node& node = nodes[stack[--top]];
-    ++visited;
-    alignas(16) float tEnter[kBvhWidth];
-    unsigned mask = ray.intersect(node, tMinV, tMaxV, tEnter);
-    prefetch(nodes, node, mask);
-    for (; mask; mask &= mask - 1) {
-      const int i = __builtin_ctz(mask);
-      if (node.count[i] == 0) {
-        stack[top++] = node.first[i];
-      } else if (blocked(node.first[i], node.count[i])) {
-        found = true;
-        break;
-      }
-    }
+    } while (kKind == HitKind::Closest && next.tEnter > tMax);
   }
   visits += visited;
   return found;
+}
+
+// Calls leaf(first, count, rays) for the leaves whose boxes meet some of the
+// packet's rays that are still searching; `rays` names those (bit r: ray r,
+// met within its own [tMin[r], *tLimit[r]]), and the call returns those of
+// them whose search it ended. Returns every ray whose search a leaf ended.
+// Closest: the active rays must share an octant, and *tLimit[r] is read
+// again after every leaf, as in traverse(). Any: the rays need not share
+// one (children are taken in slot order). `prefetch` as in traverse().
+template <HitKind kKind, typename Leaf, typename Prefetch = bvh8::NoPrefetch>
+[[gnu::always_inline]] inline std::uint32_t traversePacket(
+    const Bvh8& bvh, const SlabRay* slab, const double* tMin, const double* const* tLimit,
+    std::uint32_t active, std::uint64_t& visits, Leaf&& leaf, const Prefetch& prefetch = {}) {
+  if (bvh.empty() || active == 0) return 0;
+  if (bvh.nodes.empty()) {
+    std::uint32_t meeting = 0;
+    for (int r = 0; r < kPacketSize; ++r)
+      if ((active >> r & 1) &&
+          slab[r].meets(bvh.rootLo, bvh.rootHi, bvh8::atMost(tMin[r]), bvh8::atLeast(*tLimit[r])))
+        meeting |= 1u << r;
+    return meeting ? leaf(0, bvh.rootCount, meeting) : 0;
+  }
+  const BoxRay8 ray[kPacketSize] = {BoxRay8(slab[0]), BoxRay8(slab[1]), BoxRay8(slab[2]),
+                                    BoxRay8(slab[3])};
+  __m128 tMinV[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) tMinV[r] = _mm_set1_ps(bvh8::atMost(tMin[r]));
+  // Lane r: ray r's upper bound; closest hits refresh it after every leaf.
+  __m128 tMaxV = bvh8::atLeast4(tLimit);
+  alignas(16) float tMax[kPacketSize];
+  _mm_store_ps(tMax, tMaxV);
+  // An any-hit search's bounds never change: splat them once.
+  __m128 fixedMax[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r) fixedMax[r] = _mm_set1_ps(tMax[r]);
+  const int octant = ray[__builtin_ctz(active)].octant();
+  bvh8::PacketEntry stack[bvh8::kStackSize];
+  int top = 0;
+  const Bvh8Node* nodes = bvh.nodes.data();
+  std::uint64_t visited = 0;
+  std::uint32_t open = active, done = 0;  // rays still searching, rays whose search ended
+  bvh8::PacketEntry next{0, 0, 0.0f, 0};
+  std::uint32_t rays = active;  // next's rays
+  for (;;) {
+    if (next.count == 0) {
+      const Bvh8Node& node = nodes[next.first];
+      ++visited;
+      alignas(16) float tEnter[kPacketSize][kBvhWidth];
+      std::uint32_t perRay = 0;  // bit 8r + i: ray r meets child i
+      __m128 nearLow = _mm_set1_ps(std::numeric_limits<float>::infinity()), nearHigh = nearLow;
+      for (int r = 0; r < kPacketSize; ++r) {
+        if (!(rays >> r & 1)) continue;
+        const __m128 limit = kKind == HitKind::Any ? fixedMax[r] : _mm_set1_ps(tMax[r]);
+        perRay |= ray[r].intersect(node, tMinV[r], limit, tEnter[r]) << (8 * r);
+        if constexpr (kKind == HitKind::Closest) {
+          // Rays that miss a child lower its entry too: still a bound below
+          // the rays that meet it, which is all the culling below needs.
+          nearLow = _mm_min_ps(nearLow, _mm_load_ps(tEnter[r]));
+          nearHigh = _mm_min_ps(nearHigh, _mm_load_ps(tEnter[r] + 4));
+        }
+      }
+      std::uint32_t any = (perRay | perRay >> 8 | perRay >> 16 | perRay >> 24) & 0xffu;
+      prefetch(nodes, node, any);
+      if constexpr (kKind == HitKind::Any) {
+        // The leaves met are tested at once; inner children wait.
+        for (; any && open; any &= any - 1) {
+          const int i = __builtin_ctz(any);
+          const std::uint32_t meeting = bvh8::raysOf(perRay >> i) & open;
+          if (!meeting) continue;
+          if (node.count[i] == 0) {
+            stack[top++] = {node.first[i], 0, 0.0f, perRay >> i};
+          } else {
+            const std::uint32_t ended = leaf(node.first[i], node.count[i], meeting);
+            done |= ended;
+            open &= ~ended;
+          }
+        }
+        if (!open) break;
+      } else if (any) {
+        // Continue with the nearest child met by some ray.
+        alignas(16) float nearest[kBvhWidth];
+        _mm_store_ps(nearest, nearLow);
+        _mm_store_ps(nearest + 4, nearHigh);
+        if ((any & (any - 1)) == 0) {
+          const int i = __builtin_ctz(any);
+          next = {node.first[i], node.count[i], nearest[i], perRay >> i};
+        } else {
+          // Farthest first, so that the nearest is popped next.
+          const std::uint32_t order = node.childOrder(octant);
+#pragma GCC unroll 8
+          for (int k = kBvhWidth - 1; k >= 0; --k) {
+            const unsigned slot = order >> (3 * k) & 7;
+            stack[top] = {node.first[slot], node.count[slot], nearest[slot], perRay >> slot};
+            top += static_cast<int>(any >> slot & 1);
+          }
+          next = stack[--top];
+        }
+        rays = bvh8::raysOf(next.meets);
+        continue;
+      }
+    } else {
+      // Only closest-hit searches postpone leaves.
+      leaf(next.first, next.count, rays);
+      tMaxV = bvh8::atLeast4(tLimit);
+      _mm_store_ps(tMax, tMaxV);
+    }
+    // Resume with the nearest postponed child that may still hold a hit for
+    // one of its rays (for an any-hit search, any postponed child with a ray
+    // still searching).
+    for (;;) {
+      if (top == 0) {
+        visits += visited;
+        return done;
+      }
+      next = stack[--top];
+      if constexpr (kKind == HitKind::Any) {
+        rays = bvh8::raysOf(next.meets) & open;
+      } else {
+        const auto still = static_cast<std::uint32_t>(
+            _mm_movemask_ps(_mm_cmple_ps(_mm_set1_ps(next.tEnter), tMaxV)));
+        rays = bvh8::raysOf(next.meets) & still;
+      }
+      if (rays) break;
+    }
+  }
+  visits += visited;
+  return done;
 }
 
 }  // namespace meshtrace

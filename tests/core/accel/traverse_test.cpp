@@ -33,12 +33,14 @@ std::vector<std::uint32_t> leavesVisited(const Bvh8& bvh, const Ray& ray, int hi
   double tBest = kInfinity;
   std::uint64_t visits = 0;
   std::vector<std::uint32_t> seen;
-  traverseClosest(bvh, slab, 0.0, tBest, visits, [&](std::uint32_t first, std::uint32_t count) {
-    for (std::uint32_t k = first; k < first + count; ++k) {
-      seen.push_back(bvh.order[k]);
-      if (static_cast<int>(bvh.order[k]) == hitBox) tBest = hitAt;
-    }
-  });
+  traverse<HitKind::Closest>(bvh, slab, 0.0, tBest, visits,
+                             [&](std::uint32_t first, std::uint32_t count) {
+                               for (std::uint32_t k = first; k < first + count; ++k) {
+                                 seen.push_back(bvh.order[k]);
+                                 if (static_cast<int>(bvh.order[k]) == hitBox) tBest = hitAt;
+                               }
+                               return false;
+                             });
   return seen;
 }
 

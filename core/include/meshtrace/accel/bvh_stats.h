@@ -13,7 +13,7 @@ struct SceneBvhStats {
   std::size_t meshBvhBytes = 0;  // nodes and triangle blocks of the triangle BVH
   std::size_t topLevelObjects = 0;
   std::size_t topLevelBytes = 0;
-  int maxDepth = 0;              // top level plus the triangle BVH
+  int maxDepth = 0;                  // top level plus the triangle BVH
   std::vector<std::string> leftOut;  // meshes too small for a BVH, and why
 };
 

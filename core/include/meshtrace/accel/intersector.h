@@ -69,9 +69,10 @@ class SceneIntersector {
   const SceneBvh* bvh() const { return bvh_.get(); }
 
  private:
-  // Brute force: false only when the aabb method rules the mesh out by its box.
-  bool meshMayBeHit(std::uint32_t index, const RayInverse& inverse, double tMin, double tMax,
-                    Counters& counters) const;
+  // The search of the acceleration method, brute force or the BVH: `Search`
+  // holds the ray and what it looks for (see SceneBvh::trace).
+  template <typename Search>
+  bool trace(Search& search, Counters& counters) const;
 
   const Scene& scene_;
   TraceOptions options_;

@@ -24,9 +24,9 @@ AccelMethod parseAccelMethod(std::string_view name);
 
 // The binned SAH build of one BVH level.
 struct BvhBuildOptions {
-  int bins = 16;             // candidate split planes per axis (fewer for small nodes)
-  int maxLeafSize = 4;       // larger sets are always split
-  double nodeCost = 1.0;     // SAH: cost of one node visit (two box tests) ...
+  int bins = 16;               // candidate split planes per axis (fewer for small nodes)
+  int maxLeafSize = 4;         // larger sets are always split
+  double nodeCost = 1.0;       // SAH: cost of one node visit (two box tests) ...
   double primitiveCost = 1.0;  // ... relative to one primitive test
   int leafBlock = 1;  // primitives tested together: a leaf of n costs ceil(n / leafBlock) tests
 };
@@ -46,8 +46,8 @@ inline constexpr std::size_t kPrefetchBvhBytes = std::size_t{24} << 20;
 struct SceneBvhOptions {
   std::size_t minMeshTriangles = kMinBvhTriangles;
   // A leaf is one block of up to four triangles, tested at once.
-  BvhBuildOptions mesh{.bins = 16, .maxLeafSize = 4, .nodeCost = 1.0, .primitiveCost = 1.0,
-                       .leafBlock = 4};
+  BvhBuildOptions mesh{
+      .bins = 16, .maxLeafSize = 4, .nodeCost = 1.0, .primitiveCost = 1.0, .leafBlock = 4};
   BvhBuildOptions top{.bins = 16, .maxLeafSize = 2, .nodeCost = 1.0, .primitiveCost = 2.0};
   // A triangle BVH of this many bytes or more fetches children ahead.
   std::size_t prefetchBytes = kPrefetchBvhBytes;
