@@ -1,33 +1,35 @@
-// The BVH against brute force, ray by ray: over a million random rays on
-// generated meshes and object scenes (origins inside, outside and exactly on
-// the bounding box; axis-parallel directions included), the BVH must report
-// the same primitive, t and barycentrics as --accel none, and its any-hit
-// query must agree with the closest hit. Rays spawned off the hits, told the
-// triangle they leave, must agree too.
+// SceneIntersector's queries with the BVH against brute force (--accel
+// none): over a million random rays on generated meshes and object scenes
+// (origins inside, outside and exactly on the bounding box; axis-parallel
+// directions included), the BVH must report the same primitive, t and
+// barycentrics, and its any-hit query must agree with the closest hit. Rays
+// spawned off the hits, told the triangle they leave, must agree too; so must
+// packets of four rays, and the BVH with children fetched ahead. Also the
+// accel method's default, names and parsing.
+#include "meshtrace/accel/intersector.h"
+
 #include <gtest/gtest.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
-#include <tbb/task_arena.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "accel/binary_bvh.h"
-#include "accel/bvh8.h"
 #include "accel/scene_bvh.h"
-#include "accel/triangle_set.h"
-#include "meshtrace/accel/intersector.h"
 #include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/render/spawn.h"
+#include "support/meshes.h"
 
 namespace meshtrace {
 namespace {
 
-Mesh makeMesh(const char* name, MeshData data) {
-  return Mesh(name, std::move(data), Shading::Flat, Material{});
-}
+using test::makeMesh;
 
 // Rotates every vertex so that no face stays axis-aligned.
 MeshData rotated(MeshData m, double angle) {
@@ -55,16 +57,6 @@ MeshData triangleSoup(int n, std::mt19937_64& rng) {
     m.triangles.push_back({next, next + 1, next + 2});
   }
   return m;
-}
-
-std::vector<Aabb> triangleBoxes(const MeshData& m) {
-  std::vector<Aabb> boxes;
-  for (const auto& t : m.triangles) {
-    Aabb b;
-    for (auto k : t) b.extend(m.vertices[k]);
-    boxes.push_back(b);
-  }
-  return boxes;
 }
 
 Scene meshScene(std::vector<Mesh> meshes) {
@@ -497,307 +489,7 @@ TEST(BvhPrefetch, FetchingChildrenAheadChangesNoAnswer) {
   EXPECT_EQ(check.anyHitDifferences, 0u) << check.example;
 }
 
-// Structure: every primitive in exactly one leaf, every box inside its
-// parent's, every primitive inside its leaf's box.
-// Whether box b lies within a node's float bounds (min x y z, max x y z).
-bool inside(const Aabb& b, const float* n) {
-  return n[0] <= b.min.x && n[1] <= b.min.y && n[2] <= b.min.z && n[3] >= b.max.x &&
-         n[4] >= b.max.y && n[5] >= b.max.z;
-}
-
-void expectEveryPrimitiveOnceInsideNestedBoxes(const Bvh& bvh, const std::vector<Aabb>& boxes) {
-  ASSERT_FALSE(bvh.empty());
-  EXPECT_LE(bvh.depth, kMaxBvhDepth);
-  std::vector<int> seen(boxes.size(), 0);
-  for (const BvhNode& node : bvh.nodes) {
-    if (node.isLeaf()) {
-      EXPECT_LE(node.count, 4u);
-      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-        ++seen[bvh.order[k]];
-        EXPECT_TRUE(inside(boxes[bvh.order[k]], node.bounds));
-      }
-      continue;
-    }
-    for (std::uint32_t c : {node.first, node.first + 1}) {
-      const float* b = bvh.nodes[c].bounds;
-      const Aabb child{Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])};
-      EXPECT_TRUE(inside(child, node.bounds));
-    }
-  }
-  for (int s : seen) ASSERT_EQ(s, 1);
-}
-
-TEST(BvhBuild, LeavesCoverEveryPrimitiveOnceInsideNestedBoxes) {
-  const std::vector<Aabb> boxes = triangleBoxes(makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 400, 12));
-  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(boxes), boxes);
-}
-
-// Large nodes choose their split from a sample of their primitives; the
-// boxes of their children must still hold the primitives left out of it.
-// Here one box in fifty reaches far out, and the sample cannot see them all.
-TEST(BvhBuild, SplitsChosenFromASampleStillGiveBoxesHoldingEveryPrimitive) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Aabb> boxes(100000);
-  for (Aabb& b : boxes) {
-    const Vec3 p(unit(rng), unit(rng), unit(rng));
-    const double reach = unit(rng) < 0.02 ? 5.0 * unit(rng) : 0.001;
-    b = {p, p + Vec3(0.001, reach, 0.001)};
-  }
-  expectEveryPrimitiveOnceInsideNestedBoxes(buildBvh(boxes), boxes);
-}
-
-// Collapsing keeps every leaf, and every child box holds its node's boxes.
-// Several meshes: their trees are built apart and joined under one over
-// the meshes' boxes. Walking the joined tree from its root reaches every
-// triangle of the set exactly once, each inside its leaf's box, every box
-// inside its parent's.
-TEST(BvhBuild, JoinedMeshTreesReachEveryTriangleOnce) {
-  const std::vector<Mesh> meshes = {
-      makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 200, 12)),
-      makeMesh("ball", makeIcosphere(Vec3(0.5, 0.0, 0.0), 0.7, 3)),  // overlaps the knot
-      makeMesh("box", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3)),
-      makeMesh("twin", makeGriddedBox(Vec3(3.0), Vec3(4.0), 3))};  // the same box again
-  TriangleSet set;
-  for (std::uint32_t i = 0; i < meshes.size(); ++i) set.add(meshes[i], i);
-  const Bvh bvh = buildBvh(set, {.leafBlock = 4});
-  ASSERT_FALSE(bvh.empty());
-  EXPECT_LE(bvh.depth, kMaxBvhDepth);
-  std::vector<int> seen(set.size(), 0);
-  std::vector<std::uint32_t> stack = {0};
-  while (!stack.empty()) {
-    const BvhNode& node = bvh.nodes[stack.back()];
-    stack.pop_back();
-    if (node.isLeaf()) {
-      EXPECT_LE(node.count, 4u);
-      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-        const std::uint32_t id = bvh.order[k];
-        ASSERT_LT(id, set.size());
-        ++seen[id];
-        const TriangleSet::Member t = set[id];
-        Aabb box;
-        for (std::uint32_t v : t.mesh->triangles()[t.triangle]) box.extend(t.mesh->vertices()[v]);
-        EXPECT_TRUE(inside(box, node.bounds)) << "triangle " << id;
-      }
-      continue;
-    }
-    for (std::uint32_t c : {node.first, node.first + 1}) {
-      const float* b = bvh.nodes[c].bounds;
-      EXPECT_TRUE(inside({Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])}, node.bounds));
-      stack.push_back(c);
-    }
-  }
-  for (std::size_t id = 0; id < seen.size(); ++id) ASSERT_EQ(seen[id], 1) << "triangle " << id;
-}
-
-TEST(BvhBuild, EightWideTreeKeepsEveryLeafInsideItsBox) {
-  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 3, 5, 0.2, 300, 10);
-  const std::vector<Aabb> boxes = triangleBoxes(knot);
-  const Bvh8 bvh = collapseToBvh8(buildBvh(boxes));
-  ASSERT_FALSE(bvh.nodes.empty());
-  std::vector<int> seen(boxes.size(), 0);
-  // Walk from the root, checking each child against the box it came with.
-  struct Item {
-    std::uint32_t node;
-    Aabb box;
-  };
-  std::vector<Item> todo{{0, Aabb{Vec3(-kInfinity), Vec3(kInfinity)}}};
-  std::size_t visited = 0;
-  while (!todo.empty()) {
-    const Item item = todo.back();
-    todo.pop_back();
-    ++visited;
-    const Bvh8Node& node = bvh.nodes[item.node];
-    for (int i = 0; i < kBvhWidth; ++i) {
-      const Aabb child{Vec3(node.lo[0][i], node.lo[1][i], node.lo[2][i]),
-                       Vec3(node.hi[0][i], node.hi[1][i], node.hi[2][i])};
-      if (child.empty()) continue;  // an unused slot
-      EXPECT_TRUE(glm::all(glm::lessThanEqual(item.box.min, child.min)) &&
-                  glm::all(glm::lessThanEqual(child.max, item.box.max)));
-      if (node.count[i] == 0) {
-        todo.push_back({node.first[i], child});
-        continue;
-      }
-      for (std::uint32_t k = node.first[i]; k < node.first[i] + node.count[i]; ++k) {
-        ++seen[bvh.order[k]];
-        const Aabb& b = boxes[bvh.order[k]];
-        EXPECT_TRUE(glm::all(glm::lessThanEqual(child.min, b.min)) &&
-                    glm::all(glm::lessThanEqual(b.max, child.max)));
-      }
-    }
-  }
-  EXPECT_EQ(visited, bvh.nodes.size());
-  for (int s : seen) ASSERT_EQ(s, 1);
-}
-
-double halfAreaOf(const float* lo, const float* hi) {
-  const double x = double{hi[0]} - lo[0], y = double{hi[1]} - lo[1], z = double{hi[2]} - lo[2];
-  return x * y + y * z + z * x;
-}
-
-// The least sum of the half-areas of the binary nodes made 8-wide nodes, by
-// trying every set of interior nodes that holds the root and leaves each of
-// them at most eight children (the leaves and chosen nodes first met below).
-double leastWideNodeArea(const Bvh& binary) {
-  std::vector<std::uint32_t> interior;
-  for (std::uint32_t i = 0; i < binary.nodes.size(); ++i)
-    if (!binary.nodes[i].isLeaf()) interior.push_back(i);
-  std::vector<int> bit(binary.nodes.size(), -1);
-  for (std::size_t k = 0; k < interior.size(); ++k) bit[interior[k]] = static_cast<int>(k);
-  double best = kInfinity;
-  for (std::uint32_t chosen = 1; chosen < (1u << interior.size()); chosen += 2) {  // root: bit 0
-    bool fits = true;
-    double area = 0.0;
-    for (std::size_t k = 0; k < interior.size() && fits; ++k) {
-      if (!(chosen >> k & 1)) continue;
-      const BvhNode& wide = binary.nodes[interior[k]];
-      area += halfAreaOf(wide.bounds, wide.bounds + 3);
-      int children = 0;
-      std::vector<std::uint32_t> todo{wide.first, wide.first + 1};
-      while (!todo.empty() && children <= kBvhWidth) {
-        const std::uint32_t c = todo.back();
-        todo.pop_back();
-        const BvhNode& node = binary.nodes[c];
-        if (node.isLeaf() || (chosen >> bit[c] & 1)) {
-          ++children;
-        } else {
-          todo.push_back(node.first);
-          todo.push_back(node.first + 1);
-        }
-      }
-      fits = children <= kBvhWidth;
-    }
-    if (fits) best = std::min(best, area);
-  }
-  return best;
-}
-
-// Which binary nodes become 8-wide nodes is a choice; the collapse makes the
-// one whose nodes' areas sum to the least (the surface area heuristic's
-// expected visits), found here by trying every choice on small trees.
-TEST(BvhBuild, EightWideNodesHaveTheLeastAreaSum) {
-  std::mt19937_64 rng(17);
-  std::uniform_real_distribution<double> u(-1.0, 1.0), size(0.01, 0.3);
-  for (int tree = 0; tree < 6; ++tree) {
-    std::vector<Aabb> boxes;
-    for (int k = 0; k < 19; ++k) {
-      const Vec3 c(u(rng), u(rng), u(rng) * 0.2), half(size(rng), size(rng), size(rng));
-      boxes.push_back(Aabb{c - half, c + half});
-    }
-    const Bvh binary = buildBvh(boxes, {.maxLeafSize = 1});
-    const double least = leastWideNodeArea(binary);
-    const Bvh8 wide = collapseToBvh8(binary);
-    double sum = halfAreaOf(binary.nodes[0].bounds, binary.nodes[0].bounds + 3);
-    for (const Bvh8Node& node : wide.nodes)
-      for (int i = 0; i < kBvhWidth; ++i) {
-        const float lo[3] = {node.lo[0][i], node.lo[1][i], node.lo[2][i]};
-        const float hi[3] = {node.hi[0][i], node.hi[1][i], node.hi[2][i]};
-        if (node.count[i] == 0 && lo[0] <= hi[0]) sum += halfAreaOf(lo, hi);  // an 8-wide child
-      }
-    EXPECT_NEAR(sum, least, 1e-5 * least) << "tree " << tree;
-  }
-}
-
-// The build is parallel, but the tree does not depend on the thread count.
-TEST(BvhBuild, SameTreeOnOneThreadAsOnAll) {
-  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 6);  // 82k triangles
-  const std::vector<Aabb> boxes = triangleBoxes(ball);
-  const Bvh all = buildBvh(boxes);
-  Bvh one;
-  tbb::task_arena(1).execute([&] { one = buildBvh(boxes); });
-  EXPECT_EQ(all.nodes.size(), one.nodes.size());
-  EXPECT_EQ(all.depth, one.depth);
-  EXPECT_TRUE(all.order == one.order);
-}
-
-TEST(BvhBuild, CoincidentBoxesStillGiveSmallLeaves) {
-  const std::vector<Aabb> boxes(1000, Aabb{Vec3(1.0), Vec3(2.0)});
-  const Bvh bvh = buildBvh(boxes);
-  for (const BvhNode& node : bvh.nodes)
-    if (node.isLeaf()) {
-      EXPECT_LE(node.count, 4u);
-    }
-  EXPECT_LE(bvh.depth, 12);
-}
-
-TEST(SceneBvh, SmallMeshesGetNoBvhAndAreSaidToBeLeftOut) {
-  Scene scene;
-  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
-  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(3.0), 1.0, 2)));
-  const SceneBvh bvh(scene);
-  EXPECT_FALSE(bvh.inMeshBvh(0));
-  EXPECT_TRUE(bvh.inMeshBvh(1));
-  std::vector<std::string> meshesLeftOut;
-  for (const std::string& item : bvh.stats().leftOut)
-    if (item.rfind("no BVH for ", 0) == 0) meshesLeftOut.push_back(item);
-  ASSERT_EQ(meshesLeftOut.size(), 1u);
-  EXPECT_NE(meshesLeftOut[0].find("square.off"), std::string::npos);
-}
-
-// Every mesh large enough for a BVH is in the one triangle BVH, which the
-// top level holds as a single object beside the meshes left out.
-TEST(SceneBvh, LargeMeshesShareOneTriangleBvh) {
-  Scene scene;
-  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 2)));
-  scene.meshes.push_back(makeMesh("square.off", makeGrid(Vec3(0.0), 1.0, 1)));  // 2 triangles
-  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(2.0), Vec3(3.0), 2)));
-  const SceneBvh bvh(scene);
-  EXPECT_EQ(bvh.stats().meshesWithBvh, 2u);
-  EXPECT_EQ(bvh.stats().trianglesInBvhs,
-            scene.meshes[0].triangles().size() + scene.meshes[2].triangles().size());
-  EXPECT_EQ(bvh.meshBvh().triangles.meshCount(), 2u);
-  EXPECT_EQ(bvh.stats().topLevelObjects, 2u);  // the triangle BVH and the square
-}
-
-// The queries find a block's mesh once, from its first lane: every block of
-// the shared tree must hold triangles of one mesh, however the meshes
-// interleave in space.
-TEST(SceneBvh, EachTriangleBlockHoldsOneMesh) {
-  const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 3);
-  Scene scene;
-  scene.meshes.push_back(makeMesh("ball.off", ball));
-  scene.meshes.push_back(makeMesh("twin.off", ball));
-  scene.meshes.push_back(makeMesh("box.off", makeGriddedBox(Vec3(-0.9), Vec3(0.9), 5)));
-  const SceneBvh bvh(scene);
-  const MeshBvh& shared = bvh.meshBvh();
-  ASSERT_EQ(shared.triangles.meshCount(), 3u);
-  std::size_t lanes = 0, mixed = 0;
-  for (const TriangleBlock4& block : shared.blocks)
-    for (int lane = 0; lane < 4 && block.id[lane] != kNoTriangle; ++lane) {
-      ++lanes;
-      mixed += shared.triangles[block.id[lane]].sceneIndex !=
-               shared.triangles[block.id[0]].sceneIndex;
-    }
-  EXPECT_EQ(lanes, shared.triangles.size());
-  EXPECT_EQ(mixed, 0u);
-}
-
-// Nodes and triangle blocks together stay within 64 bytes per triangle on
-// large meshes: the collapse keeps small subtrees inside their parent rather
-// than giving them nodes of their own with few children.
-TEST(SceneBvh, TakesAtMost64BytesPerTriangle) {
-  Scene scene;
-  scene.meshes.push_back(makeMesh("ball.off", makeIcosphere(Vec3(0.0), 1.0, 6)));  // 82k
-  scene.meshes.push_back(
-      makeMesh("knot.off", makeTorusKnot(Vec3(3.0), 1.0, 2, 3, 0.3, 600, 40)));  // 48k
-  const auto bytesPerTriangle = [](const Scene& s) {
-    const SceneBvh bvh(s);
-    return static_cast<double>(bvh.meshBvh().bytes()) /
-           static_cast<double>(bvh.stats().trianglesInBvhs);
-  };
-  for (const Mesh& mesh : scene.meshes) {
-    Scene alone;
-    alone.meshes.push_back(mesh);
-    const double perTriangle = bytesPerTriangle(alone);
-    std::printf("%s: %.1f bytes per triangle\n", mesh.file().c_str(), perTriangle);
-    EXPECT_LE(perTriangle, 64.0) << mesh.file();
-  }
-  const double together = bytesPerTriangle(scene);
-  std::printf("both in one BVH: %.1f bytes per triangle\n", together);
-  EXPECT_LE(together, 64.0);
-}
-
-TEST(Accel, BvhIsTheDefaultAndParses) {
+TEST(AccelMethod, BvhIsTheDefaultAndParses) {
   EXPECT_EQ(TraceOptions{}.accel, AccelMethod::Bvh);
   EXPECT_EQ(parseAccelMethod("bvh"), AccelMethod::Bvh);
   EXPECT_STREQ(toString(AccelMethod::Bvh), "bvh");
