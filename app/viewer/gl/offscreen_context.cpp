@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "meshtrace/io/image.h"
 #include "viewer/gl/gl_api.h"
 
 namespace meshtrace::gl {
@@ -71,7 +72,7 @@ std::vector<std::uint8_t> readFramebufferRgb(int width, int height) {
   // GL rows run bottom-up; alpha is dropped (it may be below 255).
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
   for (int row = 0; row < height; ++row) {
-    const std::uint8_t* src = &rgba[static_cast<std::size_t>(height - 1 - row) * width * 4];
+    const std::uint8_t* src = &rgba[static_cast<std::size_t>(flippedRow(row, height)) * width * 4];
     std::uint8_t* dst = &rgb[static_cast<std::size_t>(row) * width * 3];
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) dst[x * 3 + c] = src[x * 4 + c];

@@ -80,9 +80,11 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
   for (const std::string& s : shading) {
     const auto eq = s.find('=');
     const std::string mode = eq == std::string::npos ? "" : s.substr(eq + 1);
-    if (mode != "FLAT" && mode != "PHONG")
+    try {
+      o.shading.emplace_back(s.substr(0, eq), parseShading(mode));
+    } catch (const std::invalid_argument&) {
       return fail("--shading expects MESH=FLAT|PHONG, got '" + s + "'");
-    o.shading.emplace_back(s.substr(0, eq), mode);
+    }
   }
   if (o.headless && o.snapshot.empty() && !o.timeOpening)
     return fail("--headless needs --snapshot OUT.png or --time-opening");

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "meshtrace/geometry/mesh.h"
 #include "viewer/model/views.h"
 
 namespace meshtrace::viewer {
@@ -17,9 +18,9 @@ struct ViewerOptions {
   View view = View::Color;
   Overlay overlay = Overlay::None;
   double overlayOpacity = 0.6;
-  std::optional<std::pair<int, int>> pin;                    // image pixel, y = 0 the bottom row
-  std::vector<std::pair<std::string, std::string>> shading;  // mesh (name or index) -> FLAT|PHONG
-  std::vector<std::string> hide;                             // meshes to hide (name or index)
+  std::optional<std::pair<int, int>> pin;                // image pixel, y = 0 the bottom row
+  std::vector<std::pair<std::string, Shading>> shading;  // mesh (name or index) -> its mode
+  std::vector<std::string> hide;                         // meshes to hide (name or index)
   int extraSamples = 0;  // anti-aliasing samples per pixel beyond the exact one
   std::vector<std::string> sceneDirs;
   bool noDefaultDirs = false;

@@ -4,12 +4,14 @@
 #include <cmath>
 
 #include "meshtrace/render/inspect_colors.h"
+#include "meshtrace/util/enum_names.h"
 
 namespace meshtrace::viewer {
 
 namespace {
+// An EnumName with a label for the UI.
 struct ViewInfo {
-  View view;
+  View value;
   const char* name;
   const char* label;
 };
@@ -25,24 +27,16 @@ constexpr std::array<ViewInfo, kViewCount> kViews{{
     {View::SideBySide, "side-by-side", "Reference side by side"},
     {View::Difference, "difference", "Difference to reference"},
 }};
-constexpr std::array<const char*, kOverlayCount> kOverlays{"none", "boxes", "cost"};
+constexpr std::array<EnumName<Overlay>, kOverlayCount> kOverlays{
+    {{Overlay::None, "none"}, {Overlay::BoxHits, "boxes"}, {Overlay::BvhCost, "cost"}}};
 }  // namespace
 
-const char* name(View view) { return kViews[static_cast<int>(view)].name; }
+const char* name(View view) { return nameIn(kViews, view); }
 const char* label(View view) { return kViews[static_cast<int>(view)].label; }
-const char* name(Overlay overlay) { return kOverlays[static_cast<int>(overlay)]; }
+const char* name(Overlay overlay) { return nameIn(kOverlays, overlay); }
 
-std::optional<View> parseView(std::string_view n) {
-  for (const ViewInfo& v : kViews)
-    if (n == v.name) return v.view;
-  return std::nullopt;
-}
-
-std::optional<Overlay> parseOverlay(std::string_view n) {
-  for (int i = 0; i < kOverlayCount; ++i)
-    if (n == kOverlays[i]) return static_cast<Overlay>(i);
-  return std::nullopt;
-}
+std::optional<View> parseView(std::string_view n) { return valueNamed(kViews, n); }
+std::optional<Overlay> parseOverlay(std::string_view n) { return valueNamed(kOverlays, n); }
 
 bool needsProbes(View view) {
   return view != View::Color && view != View::SideBySide && view != View::Difference;
@@ -51,12 +45,9 @@ bool needsProbes(Overlay overlay) { return overlay != Overlay::None; }
 
 double overlayValue(Overlay overlay, const PixelProbe& probe, const FalseColorScales& scales) {
   switch (overlay) {
-    case Overlay::BoxHits:
-      return scales.boxMax > 0 ? probe.boxHits / scales.boxMax : 0.0;
-    case Overlay::BvhCost:
-      return scales.costMax > 0 ? probe.cost / scales.costMax : 0.0;
-    case Overlay::None:
-      break;
+    case Overlay::BoxHits: return scales.boxMax > 0 ? probe.boxHits / scales.boxMax : 0.0;
+    case Overlay::BvhCost: return scales.costMax > 0 ? probe.cost / scales.costMax : 0.0;
+    case Overlay::None: break;
   }
   return 0.0;
 }
@@ -80,31 +71,25 @@ double deviationAt(const PixelProbe& probe, const FalseColorScales& scales) {
 
 Color falseColor(View view, const PixelProbe& p, const FalseColorScales& s) {
   switch (view) {
-    case View::BoxHits:
-      return heatColor(overlayValue(Overlay::BoxHits, p, s));
-    case View::BvhCost:
-      return heatColor(overlayValue(Overlay::BvhCost, p, s));
-    default:
-      break;
+    case View::BoxHits: return heatColor(overlayValue(Overlay::BoxHits, p, s));
+    case View::BvhCost: return heatColor(overlayValue(Overlay::BvhCost, p, s));
+    default: break;
   }
   if (!p.hit()) return Color(kMissGrey);
   switch (view) {
-    case View::Normals:
-      return normalColor(Vec3(p.normal[0], p.normal[1], p.normal[2]));
+    case View::Normals: return normalColor(Vec3(p.normal[0], p.normal[1], p.normal[2]));
     case View::Depth:
       // Logarithmic: a floor running to the horizon would flatten a linear scale.
       return depthColor(std::log(p.depth), std::log(std::max(s.depthNear, 1e-12)),
                         std::log(std::max(s.depthFar, 1e-12)));
-    case View::ObjectId:
-      return idColor(static_cast<std::uint32_t>(p.object));
+    case View::ObjectId: return idColor(static_cast<std::uint32_t>(p.object));
     case View::TriangleId:
       return p.kind == ObjectKind::Mesh ? idColor(p.triangle * 7919u + p.index) : Color(0.35);
     case View::NormalDeviation: {
       const double d = deviationAt(p, s);
       return d < 0.0 ? Color(0.35) : heatColor(s.deviationMax > 0.0 ? d / s.deviationMax : 0.0);
     }
-    default:
-      break;
+    default: break;
   }
   return Color(kMissGrey);
 }

@@ -66,7 +66,7 @@ void ViewerApp::applyOptions() {
   openScene(state_, o.scene);
   for (const auto& [mesh, mode] : o.shading) {
     if (const auto i = findMesh(state_.session, mesh))
-      state_.session.setShading(*i, mode == "PHONG" ? Shading::Phong : Shading::Flat);
+      state_.session.setShading(*i, mode);
     else
       setMessage(state_, "--shading: no mesh '" + mesh + "'", true);
   }

@@ -1,29 +1,20 @@
 #include "meshtrace/accel/intersector.h"
 
-#include <stdexcept>
-#include <string>
-
 #include "accel/primitive_query.h"
 #include "accel/scene_bvh.h"
+#include "meshtrace/util/enum_names.h"
 #include "util/lanes.h"
 
 namespace meshtrace {
 
-const char* toString(AccelMethod method) {
-  switch (method) {
-    case AccelMethod::None: return "none";
-    case AccelMethod::BoundingBox: return "aabb";
-    case AccelMethod::Bvh: return "bvh";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<AccelMethod> kAccelMethods[] = {
+    {AccelMethod::None, "none"}, {AccelMethod::BoundingBox, "aabb"}, {AccelMethod::Bvh, "bvh"}};
+}  // namespace
 
+const char* toString(AccelMethod method) { return nameIn(kAccelMethods, method); }
 AccelMethod parseAccelMethod(std::string_view name) {
-  if (name == "none") return AccelMethod::None;
-  if (name == "aabb") return AccelMethod::BoundingBox;
-  if (name == "bvh") return AccelMethod::Bvh;
-  throw std::invalid_argument("unknown acceleration method '" + std::string(name) +
-                              "' (use none, aabb or bvh)");
+  return parseNamed(kAccelMethods, name, "acceleration method");
 }
 
 SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& options)

@@ -8,10 +8,16 @@
 #include <tuple>
 
 #include "meshtrace/geometry/triangle.h"
+#include "meshtrace/util/enum_names.h"
 
 namespace meshtrace {
 
-const char* toString(Shading shading) { return shading == Shading::Flat ? "FLAT" : "PHONG"; }
+namespace {
+constexpr EnumName<Shading> kShadings[] = {{Shading::Flat, "FLAT"}, {Shading::Phong, "PHONG"}};
+}  // namespace
+
+const char* toString(Shading shading) { return nameIn(kShadings, shading); }
+Shading parseShading(std::string_view name) { return parseNamed(kShadings, name, "shading mode"); }
 
 namespace {
 

@@ -33,14 +33,14 @@ void addQuads(MeshData& m, std::size_t first, int rows, int cols, bool wrapRows,
 
 MeshData makeIcosphere(const Vec3& center, double radius, int level) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vec3> unit = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0},
-                            {0, -1, t}, {0, 1, t},  {0, -1, -t}, {0, 1, -t},
-                            {t, 0, -1}, {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Vec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                            {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                            {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
   for (Vec3& v : unit) v = glm::normalize(v);
-  std::vector<TriangleIndices> tris = {
-      {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  std::vector<TriangleIndices> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   for (int l = 0; l < level; ++l) {
     // Each edge's midpoint is shared by its two triangles: cache it by edge.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
@@ -76,7 +76,8 @@ MeshData makeTorus(const Vec3& center, double ringRadius, double tubeRadius, int
     for (int j = 0; j < tubeSegments; ++j) {
       const double v = kTwoPi * j / tubeSegments;
       const double r = ringRadius + tubeRadius * std::cos(v);
-      m.vertices.push_back(center + Vec3(r * std::cos(u), tubeRadius * std::sin(v), -r * std::sin(u)));
+      m.vertices.push_back(center +
+                           Vec3(r * std::cos(u), tubeRadius * std::sin(v), -r * std::sin(u)));
     }
   }
   addQuads(m, 0, ringSegments, tubeSegments, true, true);
@@ -115,7 +116,8 @@ MeshData makeGrid(const Vec3& center, double size, int n) {
   MeshData m;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
-      m.vertices.push_back(center + Vec3(size * (double(j) / n - 0.5), 0.0, size * (double(i) / n - 0.5)));
+      m.vertices.push_back(center +
+                           Vec3(size * (double(j) / n - 0.5), 0.0, size * (double(i) / n - 0.5)));
   addQuads(m, 0, n + 1, n + 1, false, false);
   return m;
 }
@@ -126,12 +128,8 @@ MeshData makeGriddedBox(const Vec3& min, const Vec3& max, int n) {
   // points outward.
   const Vec3 e = max - min;
   const Vec3 x(e.x, 0, 0), y(0, e.y, 0), z(0, 0, e.z);
-  const std::array<std::array<Vec3, 3>, 6> faces = {{{min, z, y},
-                                                     {min + x, y, z},
-                                                     {min, x, z},
-                                                     {min + y, z, x},
-                                                     {min, y, x},
-                                                     {min + z, x, y}}};
+  const std::array<std::array<Vec3, 3>, 6> faces = {
+      {{min, z, y}, {min + x, y, z}, {min, x, z}, {min + y, z, x}, {min, y, x}, {min + z, x, y}}};
   for (const auto& [origin, u, v] : faces) {
     const std::size_t first = m.vertices.size();
     for (int i = 0; i <= n; ++i)

@@ -1,16 +1,17 @@
 #include "meshtrace/geometry/scene.h"
 
+#include "meshtrace/util/enum_names.h"
+
 namespace meshtrace {
 
-const char* toString(ObjectKind kind) {
-  switch (kind) {
-    case ObjectKind::Sphere: return "sphere";
-    case ObjectKind::Plane: return "plane";
-    case ObjectKind::Cylinder: return "cylinder";
-    case ObjectKind::Mesh: return "mesh";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<ObjectKind> kObjectKinds[] = {{ObjectKind::Sphere, "sphere"},
+                                                 {ObjectKind::Plane, "plane"},
+                                                 {ObjectKind::Cylinder, "cylinder"},
+                                                 {ObjectKind::Mesh, "mesh"}};
+}  // namespace
+
+const char* toString(ObjectKind kind) { return nameIn(kObjectKinds, kind); }
 
 std::size_t Scene::triangleCount() const {
   std::size_t n = 0;

@@ -34,9 +34,9 @@ bool acceptNearest(const double* roots, int n, double tMin, double& t) {
 bool intersect(const Sphere& s, const Ray& ray, double tMin, double& t) {
   const Vec3 oc = ray.origin - s.center;
   double roots[2];
-  const int n = solveQuadratic(glm::dot(ray.direction, ray.direction),
-                               2.0 * glm::dot(ray.direction, oc),
-                               glm::dot(oc, oc) - s.radius * s.radius, roots);
+  const int n =
+      solveQuadratic(glm::dot(ray.direction, ray.direction), 2.0 * glm::dot(ray.direction, oc),
+                     glm::dot(oc, oc) - s.radius * s.radius, roots);
   return acceptNearest(roots, n, tMin, t);
 }
 

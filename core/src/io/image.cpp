@@ -88,7 +88,8 @@ std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
 // True only if every byte reached the file and it closed cleanly.
 bool writeBytes(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
   out.close();
   return !out.fail();
 }
@@ -131,8 +132,8 @@ void checkImageDestination(const std::filesystem::path& path) {
     throw std::runtime_error(path.string() + ": cannot write the image file (no folder " +
                              folder.string() + ")");
   if (!std::filesystem::is_directory(folder, ec))
-    throw std::runtime_error(path.string() + ": cannot write the image file (" +
-                             folder.string() + " is not a folder)");
+    throw std::runtime_error(path.string() + ": cannot write the image file (" + folder.string() +
+                             " is not a folder)");
   if (::access(folder.c_str(), W_OK) != 0)
     throw std::runtime_error(path.string() + ": cannot write the image file (folder " +
                              folder.string() + " is not writable)");

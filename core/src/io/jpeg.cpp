@@ -51,8 +51,8 @@ std::vector<std::uint8_t> encode(const Image8& image, int quality) {
   }
   jpeg_start_compress(&info, TRUE);
   while (info.next_scanline < info.image_height) {
-    JSAMPROW row = const_cast<JSAMPROW>(image.rgb.data() +
-                                        static_cast<std::size_t>(info.next_scanline) * image.width * 3);
+    JSAMPROW row = const_cast<JSAMPROW>(
+        image.rgb.data() + static_cast<std::size_t>(info.next_scanline) * image.width * 3);
     jpeg_write_scanlines(&info, &row, 1);
   }
   jpeg_finish_compress(&info);

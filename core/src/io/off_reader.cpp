@@ -150,10 +150,10 @@ class OffParser {
     // "OFF", or its variants with per-vertex colours/normals ("COFF", "NOFF",
     // "CNOFF"): the extra vertex values are ignored.
     if (token.size() < 3 || token.substr(token.size() - 3) != "OFF" || token.size() > 5) {
-      fail("bad header " + text::quoted(token) + ": an OFF file starts with 'OFF'");
+      fail("bad header " + quoted(token) + ": an OFF file starts with 'OFF'");
     }
     const auto parseCount = [&](std::string_view t, std::int64_t& out) {
-      if (!text::parseInt64(t, out)) fail("bad count " + text::quoted(t) + " in header");
+      if (!text::parseInt64(t, out)) fail("bad count " + quoted(t) + " in header");
       if (out < 0) fail("negative count " + std::to_string(out) + " in header");
     };
     int found = 0;
@@ -174,8 +174,8 @@ class OffParser {
     for (int k = 0; k < 3; ++k) {
       std::string_view token;
       if (!tokens.next(token)) fail(" has fewer than 3 coordinates");
-      if (!text::parseDouble(token, v[k])) fail(": " + text::quoted(token) + " is not a number");
-      if (!std::isfinite(v[k])) fail(" has a non-finite coordinate " + text::quoted(token));
+      if (!text::parseDouble(token, v[k])) fail(": " + quoted(token) + " is not a number");
+      if (!std::isfinite(v[k])) fail(" has a non-finite coordinate " + quoted(token));
     }
     return v;
   }
@@ -189,14 +189,14 @@ class OffParser {
     std::string_view token;
     std::int64_t corners = 0;
     tokens.next(token);
-    if (!text::parseInt64(token, corners)) fail(": bad corner count " + text::quoted(token));
+    if (!text::parseInt64(token, corners)) fail(": bad corner count " + quoted(token));
     if (corners < 3) fail(" has " + std::to_string(corners) + " corners; at least 3 are needed");
     std::uint32_t first = 0, previous = 0;
     for (std::int64_t k = 0; k < corners; ++k) {
       std::int64_t v = 0;
       if (!tokens.next(token))
         fail(" announces " + std::to_string(corners) + " corners but lists " + std::to_string(k));
-      if (!text::parseInt64(token, v)) fail(": bad vertex index " + text::quoted(token));
+      if (!text::parseInt64(token, v)) fail(": bad vertex index " + quoted(token));
       if (v < 0 || v >= nv_) {
         fail(": vertex index " + std::to_string(v) + " out of range (the mesh has " +
              std::to_string(nv_) + " vertices)");

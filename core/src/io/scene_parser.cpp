@@ -95,7 +95,7 @@ class SceneParser {
       } else if (k == "mesh") {
         meshLines.push_back(readMeshLine());
       } else {
-        failAt(keyword.line, "unknown keyword " + text::quoted(k));
+        failAt(keyword.line, "unknown keyword " + quoted(k));
       }
     }
     if (!haveCamera) throw InputError::inFile(file_, "no 'camera' line: a scene needs a camera");
@@ -116,8 +116,8 @@ class SceneParser {
 
   const Token& take(const std::string& what) {
     if (pos_ >= tokens_.size()) {
-      failAt(entity_.line, "'" + std::string(entity_.text) + "' is incomplete: the file ends where the " +
-                               what + " belongs");
+      failAt(entity_.line, "'" + std::string(entity_.text) +
+                               "' is incomplete: the file ends where the " + what + " belongs");
     }
     return tokens_[pos_++];
   }
@@ -127,9 +127,9 @@ class SceneParser {
     double v = 0.0;
     if (!text::parseDouble(t.text, v)) {
       failAt(t.line, "expected a number for the " + what + " of '" + std::string(entity_.text) +
-                         "' (line " + std::to_string(entity_.line) + "), found " + text::quoted(t.text));
+                         "' (line " + std::to_string(entity_.line) + "), found " + quoted(t.text));
     }
-    if (!std::isfinite(v)) failAt(t.line, "the " + what + " is not finite: " + text::quoted(t.text));
+    if (!std::isfinite(v)) failAt(t.line, "the " + what + " is not finite: " + quoted(t.text));
     return v;
   }
 
@@ -137,7 +137,7 @@ class SceneParser {
     const Token& t = take(what);
     std::int64_t v = 0;
     if (!text::parseInt64(t.text, v))
-      failAt(t.line, "expected a whole number for the " + what + ", found " + text::quoted(t.text));
+      failAt(t.line, "expected a whole number for the " + what + ", found " + quoted(t.text));
     if (v < lo || v > hi) {
       failAt(t.line, "the " + what + " " + std::to_string(v) + " is outside " + std::to_string(lo) +
                          ".." + std::to_string(hi));
@@ -203,13 +203,11 @@ class SceneParser {
   MeshLine readMeshLine() {
     const Token& name = take("mesh file name");
     const Token& mode = take("shading mode");
-    Shading shading;
-    if (mode.text == "FLAT") {
-      shading = Shading::Flat;
-    } else if (mode.text == "PHONG") {
-      shading = Shading::Phong;
-    } else {
-      failAt(mode.line, "unknown shading mode " + text::quoted(mode.text) + ": use FLAT or PHONG");
+    Shading shading{};
+    try {
+      shading = parseShading(mode.text);
+    } catch (const std::invalid_argument& e) {
+      failAt(mode.line, e.what());
     }
     const Material material = readMaterial();
     return {file_.parent_path() / std::string(name.text), shading, material, name.line};

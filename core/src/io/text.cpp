@@ -51,8 +51,8 @@ void requireText(std::string_view text, const std::filesystem::path& file) {
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
   if (nul != std::string_view::npos) {
-    throw InputError::inFile(file, "binary data (a NUL byte at offset " + std::to_string(nul) +
-                                       "): not a text file");
+    throw InputError::inFile(
+        file, "binary data (a NUL byte at offset " + std::to_string(nul) + "): not a text file");
   }
 }
 
@@ -96,17 +96,6 @@ bool TokenReader::next(std::string_view& token) {
   while (pos_ < line_.size() && !isSpace(line_[pos_])) ++pos_;
   token = line_.substr(start, pos_ - start);
   return true;
-}
-
-std::string quoted(std::string_view token) {
-  constexpr std::size_t kShown = 40;
-  std::string s = "'";
-  for (char c : token.substr(0, kShown)) {
-    const auto u = static_cast<unsigned char>(c);
-    s += (u >= 0x20 && u < 0x7f) ? c : '?';
-  }
-  if (token.size() > kShown) s += "...";
-  return s + "'";
 }
 
 }  // namespace meshtrace::text

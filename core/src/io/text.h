@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "meshtrace/util/quoted.h"
 #include "util/build_vector.h"
 
 namespace meshtrace::text {
@@ -64,7 +65,5 @@ class TokenReader {
   std::string_view line_;
   std::size_t pos_ = 0;
 };
-
-std::string quoted(std::string_view token);
 
 }  // namespace meshtrace::text

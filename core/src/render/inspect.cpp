@@ -143,17 +143,10 @@ PixelInspection inspectPixel(const SceneIntersector& intersector, const Camera& 
 std::int32_t objectIndex(const Scene& scene, const PrimitiveRef& ref) {
   std::size_t base = 0;
   switch (ref.kind) {
-    case ObjectKind::Mesh:
-      base += scene.cylinders.size();
-      [[fallthrough]];
-    case ObjectKind::Cylinder:
-      base += scene.planes.size();
-      [[fallthrough]];
-    case ObjectKind::Plane:
-      base += scene.spheres.size();
-      [[fallthrough]];
-    case ObjectKind::Sphere:
-      break;
+    case ObjectKind::Mesh: base += scene.cylinders.size(); [[fallthrough]];
+    case ObjectKind::Cylinder: base += scene.planes.size(); [[fallthrough]];
+    case ObjectKind::Plane: base += scene.spheres.size(); [[fallthrough]];
+    case ObjectKind::Sphere: break;
   }
   return static_cast<std::int32_t>(base + ref.object);
 }

@@ -28,24 +28,12 @@ Color idColor(std::uint32_t id) {
   const double x = 1.0 - std::abs(std::fmod(h, 2.0) - 1.0);
   Color c;
   switch (static_cast<int>(h)) {
-    case 0:
-      c = {1, x, 0};
-      break;
-    case 1:
-      c = {x, 1, 0};
-      break;
-    case 2:
-      c = {0, 1, x};
-      break;
-    case 3:
-      c = {0, x, 1};
-      break;
-    case 4:
-      c = {x, 0, 1};
-      break;
-    default:
-      c = {1, 0, x};
-      break;
+    case 0: c = {1, x, 0}; break;
+    case 1: c = {x, 1, 0}; break;
+    case 2: c = {0, 1, x}; break;
+    case 3: c = {0, x, 1}; break;
+    case 4: c = {x, 0, 1}; break;
+    default: c = {1, 0, x}; break;
   }
   return c * v;
 }

@@ -1,16 +1,20 @@
 #include "meshtrace/render/progressive.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 
 #include "render/progressive_job.h"
 
 namespace meshtrace {
 
-namespace {
-using progressive_detail::Clock;
-using progressive_detail::msBetween;
-}  // namespace
+using progressive::BufferPool;
+using progressive::Clock;
+using progressive::Job;
+using progressive::msBetween;
 
 void sampleOffset(int k, double& dx, double& dy) {
   // R2 sequence (Roberts 2018): frac(0.5 + k * (1/phi2, 1/phi2^2)).
@@ -19,16 +23,79 @@ void sampleOffset(int k, double& dx, double& dy) {
   dy = std::fmod(0.5 + k * a2, 1.0) - 0.5;
 }
 
+struct PreparedScene::Lazy {
+  std::once_flag built;
+  std::unique_ptr<SceneIntersector> intersector;
+};
+
 PreparedScene::PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options)
-    : scene_(std::move(scene)), options_(options) {}
+    : scene_(std::move(scene)), options_(options), lazy_(std::make_unique<Lazy>()) {}
 
 PreparedScene::~PreparedScene() = default;
 
 const SceneIntersector& PreparedScene::intersector() const {
-  std::call_once(built_,
-                 [&] { intersector_ = std::make_unique<SceneIntersector>(*scene_, options_); });
-  return *intersector_;
+  std::call_once(lazy_->built, [&] {
+    lazy_->intersector = std::make_unique<SceneIntersector>(*scene_, options_);
+  });
+  return *lazy_->intersector;
 }
+
+// The workers and the job they share. Workers take the current job's items
+// (a tile in a pass) in order; a new job replaces the current one, and the
+// workers move to it between pixels.
+class ProgressiveRenderer::Impl {
+ public:
+  Impl(int threads, std::function<void()> workerStart,
+       std::function<void(const PassFinished&)> passFinished);
+  ~Impl();
+
+  std::uint64_t start(std::shared_ptr<const PreparedScene> scene, const Camera& camera,
+                      const ProgressiveSettings& settings);
+  void cancel();
+  void pauseWorkers(int count);
+  ProgressiveStatus status() const;
+  std::vector<int> update(ProgressiveFrame& frame) const;
+  int threads() const { return static_cast<int>(workers_.size()); }
+
+ private:
+  void workerLoop(int worker);
+  // Between pixels: waits while `worker` is paused; false once `job` is cancelled.
+  bool mayGoOn(const Job& job, int worker);
+  // Until done() (part of `job` that other workers hold); false if the job
+  // is cancelled first.
+  bool waitFor(const Job& job, const std::function<bool()>& done);
+  void resumeCancelled();
+
+  std::function<void(const PassFinished&)> passFinished_;
+  std::shared_ptr<BufferPool> pool_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::shared_ptr<Job> current_;
+  std::uint64_t generation_ = 0;
+  bool stopping_ = false;
+  std::mutex pauseMutex_;
+  std::condition_variable resumed_;
+  alignas(64) std::atomic<int> paused_{0};          // read between pixels: a line of its own
+  alignas(64) std::atomic<int> waitingForWork_{0};  // workers waiting for work others hold
+  std::vector<std::thread> workers_;
+};
+
+ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> workerStart,
+                                         std::function<void(const PassFinished&)> passFinished)
+    : impl_(std::make_unique<Impl>(threads, std::move(workerStart), std::move(passFinished))) {}
+ProgressiveRenderer::~ProgressiveRenderer() = default;
+std::uint64_t ProgressiveRenderer::start(std::shared_ptr<const PreparedScene> scene,
+                                         const Camera& camera,
+                                         const ProgressiveSettings& settings) {
+  return impl_->start(std::move(scene), camera, settings);
+}
+void ProgressiveRenderer::cancel() { impl_->cancel(); }
+void ProgressiveRenderer::pauseWorkers(int count) { impl_->pauseWorkers(count); }
+ProgressiveStatus ProgressiveRenderer::status() const { return impl_->status(); }
+std::vector<int> ProgressiveRenderer::update(ProgressiveFrame& frame) const {
+  return impl_->update(frame);
+}
+int ProgressiveRenderer::threads() const { return impl_->threads(); }
 
 std::optional<std::size_t> ProgressiveFrame::cornerOf(int col, int row) const {
   if (col < 0 || row < 0 || col >= width || row >= height) return std::nullopt;
@@ -47,8 +114,8 @@ const std::uint8_t* ProgressiveFrame::rgbaAt(int col, int row) const {
   return i ? &rgba[*i * 4] : nullptr;
 }
 
-ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> workerStart,
-                                         std::function<void(const PassFinished&)> passFinished)
+ProgressiveRenderer::Impl::Impl(int threads, std::function<void()> workerStart,
+                                std::function<void(const PassFinished&)> passFinished)
     : passFinished_(std::move(passFinished)), pool_(std::make_shared<BufferPool>()) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (int i = 0; i < threads; ++i)
@@ -58,7 +125,7 @@ ProgressiveRenderer::ProgressiveRenderer(int threads, std::function<void()> work
     });
 }
 
-ProgressiveRenderer::~ProgressiveRenderer() {
+ProgressiveRenderer::Impl::~Impl() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
@@ -69,9 +136,9 @@ ProgressiveRenderer::~ProgressiveRenderer() {
   for (std::thread& w : workers_) w.join();
 }
 
-std::uint64_t ProgressiveRenderer::start(std::shared_ptr<const PreparedScene> scene,
-                                         const Camera& camera,
-                                         const ProgressiveSettings& settings) {
+std::uint64_t ProgressiveRenderer::Impl::start(std::shared_ptr<const PreparedScene> scene,
+                                               const Camera& camera,
+                                               const ProgressiveSettings& settings) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (current_) current_->cancelled = true;
   ++generation_;
@@ -81,7 +148,7 @@ std::uint64_t ProgressiveRenderer::start(std::shared_ptr<const PreparedScene> sc
   return generation_;
 }
 
-void ProgressiveRenderer::cancel() {
+void ProgressiveRenderer::Impl::cancel() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (current_) current_->cancelled = true;
@@ -90,7 +157,7 @@ void ProgressiveRenderer::cancel() {
   resumeCancelled();
 }
 
-void ProgressiveRenderer::pauseWorkers(int count) {
+void ProgressiveRenderer::Impl::pauseWorkers(int count) {
   {
     std::lock_guard<std::mutex> lock(pauseMutex_);
     paused_.store(count, std::memory_order_relaxed);
@@ -98,13 +165,13 @@ void ProgressiveRenderer::pauseWorkers(int count) {
   resumed_.notify_all();
 }
 
-void ProgressiveRenderer::resumeCancelled() {
+void ProgressiveRenderer::Impl::resumeCancelled() {
   // Taking the lock orders the cancellation before a paused worker's check.
   { std::lock_guard<std::mutex> lock(pauseMutex_); }
   resumed_.notify_all();
 }
 
-bool ProgressiveRenderer::mayGoOn(const Job& job, int worker) {
+bool ProgressiveRenderer::Impl::mayGoOn(const Job& job, int worker) {
   if (worker < paused_.load(std::memory_order_relaxed) && waitingForWork_.load() == 0) {
     std::unique_lock<std::mutex> lock(pauseMutex_);
     resumed_.wait(lock, [&] {
@@ -115,7 +182,7 @@ bool ProgressiveRenderer::mayGoOn(const Job& job, int worker) {
   return !job.cancelled.load(std::memory_order_relaxed);
 }
 
-bool ProgressiveRenderer::waitFor(const Job& job, const std::function<bool()>& done) {
+bool ProgressiveRenderer::Impl::waitFor(const Job& job, const std::function<bool()>& done) {
   if (done()) return true;
   // A worker still at it may be paused: it goes on while anyone waits.
   {
@@ -135,7 +202,7 @@ bool ProgressiveRenderer::waitFor(const Job& job, const std::function<bool()>& d
   return ready;
 }
 
-void ProgressiveRenderer::workerLoop(int worker) {
+void ProgressiveRenderer::Impl::workerLoop(int worker) {
   std::uint64_t seen = 0;
   for (;;) {
     std::shared_ptr<Job> job;
@@ -162,7 +229,7 @@ void ProgressiveRenderer::workerLoop(int worker) {
   }
 }
 
-ProgressiveStatus ProgressiveRenderer::status() const {
+ProgressiveStatus ProgressiveRenderer::Impl::status() const {
   std::shared_ptr<Job> job;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -192,7 +259,7 @@ ProgressiveStatus ProgressiveRenderer::status() const {
   return s;
 }
 
-std::vector<int> ProgressiveRenderer::update(ProgressiveFrame& frame) const {
+std::vector<int> ProgressiveRenderer::Impl::update(ProgressiveFrame& frame) const {
   std::shared_ptr<Job> job;
   {
     std::lock_guard<std::mutex> lock(mutex_);

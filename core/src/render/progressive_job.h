@@ -16,26 +16,25 @@
 
 namespace meshtrace {
 
-namespace progressive_detail {
+namespace progressive {
 using Clock = std::chrono::steady_clock;
 
 inline double msBetween(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
-}  // namespace progressive_detail
 
 // A job's image-sized storage. It is allocated by a worker, not by start()
 // on the caller's (a viewer's UI) thread, and once the job and the frames
 // reading its probes let go of it, it serves the next job, which overwrites
 // every element before anyone reads it: while a camera is dragged, a new
 // job starts every frame.
-struct ProgressiveRenderer::Buffers {
+struct Buffers {
   std::vector<Color> sum;          // worker side: sum of the samples per pixel, for AA passes
   std::vector<PixelProbe> probes;  // written once per pixel, read where published
   std::vector<std::uint8_t> rgba;  // published colours, under the tile's lock
 };
 
-class ProgressiveRenderer::BufferPool : public std::enable_shared_from_this<BufferPool> {
+class BufferPool : public std::enable_shared_from_this<BufferPool> {
  public:
   std::shared_ptr<Buffers> take() {
     std::unique_ptr<Buffers> buffers;
@@ -60,8 +59,7 @@ class ProgressiveRenderer::BufferPool : public std::enable_shared_from_this<Buff
   std::unique_ptr<Buffers> spare_;
 };
 
-struct ProgressiveRenderer::Job {
-  using Clock = progressive_detail::Clock;
+struct Job {
 
   std::uint64_t id = 0;
   std::shared_ptr<const PreparedScene> scene;
@@ -191,7 +189,7 @@ struct ProgressiveRenderer::Job {
     fresh.resize(static_cast<std::size_t>(tile) * tile);
     const bool complete = forEachNewPixel(pass, step, c0, r0, c1, r1, [&](int c, int r) {
       if (!mayGoOn()) return false;
-      const double x = c + dx, y = height - 1 - r + dy;
+      const double x = c + dx, y = flippedRow(r, height) + dy;
       if (antiAliasing) {
         const Color sum = buffers->sum[index(c, r)] += tracePixel(x, y, work);
         fresh[(r - r0) * tile + (c - c0)] = rgbaOf(sum / samples);
@@ -216,7 +214,7 @@ struct ProgressiveRenderer::Job {
     const int tilesDone = ++passTiles[pass];
     ++itemsDone;
     if (tilesDone == tileCount) {
-      const double ms = progressive_detail::msBetween(start, Clock::now());
+      const double ms = msBetween(start, Clock::now());
       std::lock_guard<std::mutex> lock(statsMutex);
       if (pass == 0) firstCoarseMs = ms;
       if (pass == levelCount() - 1) exactMs = ms;
@@ -251,5 +249,7 @@ struct ProgressiveRenderer::Job {
     counters += work;
   }
 };
+
+}  // namespace progressive
 
 }  // namespace meshtrace

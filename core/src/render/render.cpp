@@ -1,39 +1,11 @@
 #include "meshtrace/render/render.h"
 
-#include <tbb/blocked_range2d.h>
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 
 #include "meshtrace/render/integrator.h"
+#include "util/parallel_tiles.h"
 
 namespace meshtrace {
-
-namespace {
-// Runs tile(rows, cols, counters) over a grid of `height` rows and `width`
-// columns in tiles of `grain` x `grain`, spread over `threads` workers (0:
-// all cores).
-template <typename Tile>
-Counters forEachTile(int width, int height, int grain, int threads, const Tile& tile) {
-  tbb::combinable<Counters> perThread;
-  const auto run = [&] {
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, height, grain, 0, width, grain),
-        [&](const tbb::blocked_range2d<int>& r) { tile(r.rows(), r.cols(), perThread.local()); });
-  };
-  if (threads > 0) {
-    tbb::task_arena arena(threads);
-    arena.execute(run);
-  } else {
-    run();
-  }
-  Counters total;
-  perThread.combine_each([&](const Counters& c) { total += c; });
-  return total;
-}
-}  // namespace
 
 Image render(const Scene& scene, const RenderOptions& options, Counters* counters) {
   return render(SceneIntersector(scene, options.trace), options.threads, counters);
@@ -48,8 +20,7 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
   // (Integrator::quad), in tiles of 8x8 quads. The quads sit on even
   // storage rows and columns whatever the tiling, so the work done does not
   // depend on the thread count; a quad cut by the image's edge goes pixel
-  // by pixel. Storage row `row` is y = height - 1 - row (y = 0 at the
-  // bottom).
+  // by pixel.
   const auto tile = [&](const tbb::blocked_range<int>& quadRows,
                         const tbb::blocked_range<int>& quadCols, Counters& c) {
     for (int qr = quadRows.begin(); qr < quadRows.end(); ++qr)
@@ -57,7 +28,7 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
         const int row = 2 * qr, x = 2 * qc;
         if (row + 1 < height && x + 1 < width) {
           Color quad[kPacketSize];
-          integrator.quad(x, height - 2 - row, quad, c);
+          integrator.quad(x, flippedRow(row + 1, height), quad, c);
           image.at(x, row + 1) = quad[0];
           image.at(x + 1, row + 1) = quad[1];
           image.at(x, row) = quad[2];
@@ -66,7 +37,7 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
         }
         for (int r = row; r < std::min(row + 2, height); ++r)
           for (int px = x; px < std::min(x + 2, width); ++px)
-            image.at(px, r) = integrator.pixel(px, height - 1 - r, c);
+            image.at(px, r) = integrator.pixel(px, flippedRow(r, height), c);
       }
   };
   const Counters total = forEachTile((width + 1) / 2, (height + 1) / 2, 8, threads, tile);
@@ -95,7 +66,7 @@ BoxHitCounts countBoxHits(const Scene& scene, int threads) {
         for (int row = rows.begin(); row < rows.end(); ++row)
           for (int x = cols.begin(); x < cols.end(); ++x)
             out.counts[static_cast<std::size_t>(row) * out.width + x] =
-                boxHitCount(scene, scene.camera.primaryRay(x, out.height - 1 - row));
+                boxHitCount(scene, scene.camera.primaryRay(x, flippedRow(row, out.height)));
       });
   for (int n : out.counts) out.maxCount = std::max(out.maxCount, n);
   return out;

@@ -1,11 +1,18 @@
 #pragma once
-// The Whitted shading recursion, written once. The Integrator runs it with
-// NoObserver, whose hooks inline to nothing; the pixel inspector runs it with
-// an observer that records every step, so what it explains is exactly what
-// was rendered.
+// All of the shading: the Whitted recursion (local Phong lighting with hard
+// shadows, mirror reflection up to the scene's depth), for one ray and for a
+// packet of four. The one-ray recursion is written once for two users: the
+// Integrator runs it with NoObserver, whose hooks inline to nothing, and the
+// pixel inspector with an observer that records every step, so that what it
+// explains is exactly what was rendered. The packet version shares its
+// pieces (whittedLocal, mirrorBounce, mirrorMix) and gives the same colours
+// to the bit (Render.GivesEachPixelTheColourItHasAlone holds it to that).
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 
 #include "meshtrace/accel/intersector.h"
+#include "meshtrace/render/integrator.h"
 #include "meshtrace/render/spawn.h"
 #include "meshtrace/render/surface.h"
 
@@ -48,9 +55,8 @@ inline Ray shadowRayToward(const Light& light, const SurfacePoint& sp, const Vec
 // the surface or shadowed: shadowed(i, l) tells whether the shadow ray
 // toward light i, in direction l, is blocked.
 template <typename Observer, typename Shadowed>
-Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir,
-                   const SurfacePoint& sp, Counters& counters, Observer& observer,
-                   const Shadowed& shadowed) {
+Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir, const SurfacePoint& sp,
+                   Counters& counters, Observer& observer, const Shadowed& shadowed) {
   const Scene& scene = intersector.scene();
   const Material& m = *sp.material;
   Color color = scene.ambience * m.ambient;
@@ -158,6 +164,82 @@ Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int leve
   Hit hit;
   const bool found = intersector.closestHit(ray, kSpawnTMin, hit, counters, start);
   return whittedShade(intersector, ray, found, hit, level, counters, observer);
+}
+
+// whittedTrace for the rays of a packet named in `active` (bit r: rays[r],
+// leaving start[r] when `start` is given), into out[r]; the other slots are
+// left alone. The rays' closest hits are found as one packet, the shadow
+// rays toward each light from their hits as another, and their mirror
+// reflections as the next level's packet (up to kMaxPacketLights lights;
+// with more, each ray's shading goes on alone). Every rays[r] must be a
+// valid ray, active or not.
+inline void whittedShadePacket(const SceneIntersector& intersector, const Ray* rays,
+                               std::uint32_t active, int level, const PrimitiveRef* start,
+                               Color* out, Counters& counters) {
+  const Scene& scene = intersector.scene();
+  Hit hits[kPacketSize];
+  bool found[kPacketSize];
+  intersector.closestHitPacket(rays, kSpawnTMin, hits, found, counters, start, active);
+  NoObserver none;
+  if (scene.lights.size() > kMaxPacketLights) {
+    for (int r = 0; r < kPacketSize; ++r)
+      if (active >> r & 1)
+        out[r] = whittedShade(intersector, rays[r], found[r], hits[r], level, counters, none);
+    return;
+  }
+  SurfacePoint sp[kPacketSize];
+  for (int r = 0; r < kPacketSize; ++r)
+    if (found[r])
+      sp[r] = surfaceAt(scene, rays[r], hits[r], intersector.options().triangle.precision);
+  // Each light's shadow rays from the hits go as one packet; rays not cast
+  // (no hit, light behind) keep the incoming ray as a placeholder.
+  std::uint32_t blocked[kMaxPacketLights];
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    Ray shadow[kPacketSize];
+    std::copy(rays, rays + kPacketSize, shadow);
+    double lightDistance[kPacketSize] = {};
+    PrimitiveRef shadowStart[kPacketSize];
+    std::uint32_t cast = 0;
+    for (int r = 0; r < kPacketSize; ++r) {
+      Vec3 l;
+      double nl;
+      if (found[r] && lightToward(scene.lights[i], sp[r], l, nl)) {
+        shadow[r] = shadowRayToward(scene.lights[i], sp[r], l, lightDistance[r]);
+        shadowStart[r] = sp[r].primitive;
+        cast |= 1u << r;
+      }
+    }
+    blocked[i] =
+        intersector.occludedPacket(shadow, kSpawnTMin, lightDistance, shadowStart, cast, counters);
+  }
+  Color local[kPacketSize];
+  Ray bounce[kPacketSize];
+  PrimitiveRef bounceStart[kPacketSize];
+  std::uint32_t reflecting = 0;
+  for (int r = 0; r < kPacketSize; ++r) {
+    if (!(active >> r & 1)) continue;
+    if (!found[r]) {
+      out[r] = scene.background;
+      continue;
+    }
+    const auto shadowed = [&](std::size_t i, const Vec3&) { return (blocked[i] >> r & 1) != 0; };
+    local[r] = whittedLocal(intersector, -rays[r].direction, sp[r], counters, none, shadowed);
+    if (!reflectsAt(scene, sp[r], level)) {
+      out[r] = local[r];
+      continue;
+    }
+    bounce[r] = mirrorBounce(rays[r], sp[r]);
+    bounceStart[r] = sp[r].primitive;
+    reflecting |= 1u << r;
+    ++counters.reflectionRays;
+  }
+  if (reflecting == 0) return;
+  for (int r = 0; r < kPacketSize; ++r)
+    if (!(reflecting >> r & 1)) bounce[r] = bounce[__builtin_ctz(reflecting)];
+  Color seen[kPacketSize];
+  whittedShadePacket(intersector, bounce, reflecting, level + 1, bounceStart, seen, counters);
+  for (int r = 0; r < kPacketSize; ++r)
+    if (reflecting >> r & 1) out[r] = mirrorMix(local[r], sp[r].material->mirror, seen[r]);
 }
 
 }  // namespace meshtrace

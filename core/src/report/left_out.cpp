@@ -17,7 +17,8 @@ std::vector<std::string> leftOut(const Scene& scene) {
   else if (!scene.hasMirrors())
     out.push_back("no reflection rays: no material has a mirror reflectivity above 0");
   if (!scene.meshes.empty())
-    out.push_back("OpenMesh cross-check of the normals not run: only the viewer runs it, on request");
+    out.push_back(
+        "OpenMesh cross-check of the normals not run: only the viewer runs it, on request");
   return out;
 }
 

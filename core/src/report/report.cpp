@@ -1,9 +1,6 @@
 // raytrace --report: configurations, measurements and the written report.
 #include "meshtrace/report/report.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -15,20 +12,11 @@
 #include "meshtrace/render/surface.h"
 #include "meshtrace/report/image_compare.h"
 #include "meshtrace/report/left_out.h"
+#include "util/parallel_tiles.h"
 
 namespace meshtrace {
 
 namespace {
-
-template <typename Body>
-void parallelRows(int height, int threads, const Body& body) {
-  const auto run = [&] { tbb::parallel_for(0, height, body); };
-  if (threads > 0) {
-    tbb::task_arena(threads).execute(run);
-  } else {
-    run();
-  }
-}
 
 // The primary hit of every storage pixel (of its block's traced pixel for a
 // coarse pass), with its shading normal.
@@ -43,16 +31,16 @@ std::vector<PixelHit> primaryHits(const Scene& scene, const TraceOptions& option
   const SceneIntersector intersector(scene, options);
   const int w = scene.camera.width(), h = scene.camera.height();
   std::vector<PixelHit> out(static_cast<std::size_t>(w) * h);
-  parallelRows(h, threads, [&](int row) {
-    Counters counters;
-    for (int x = 0; x < w; ++x) {
-      const int cx = x - x % step, crow = row - row % step;  // the block's traced pixel
-      const Ray ray = scene.camera.primaryRay(cx, h - 1 - crow);
-      Hit hit;
-      PixelHit& p = out[static_cast<std::size_t>(row) * w + x];
-      if (!intersector.closestHit(ray, 0.0, hit, counters)) continue;
-      p = {true, hit.ref, surfaceAt(scene, ray, hit, options.triangle.precision).normal};
-    }
+  forEachTile(w, h, 16, threads, [&](const auto& rows, const auto& cols, Counters& counters) {
+    for (int row = rows.begin(); row < rows.end(); ++row)
+      for (int x = cols.begin(); x < cols.end(); ++x) {
+        const int cx = x - x % step, crow = row - row % step;  // the block's traced pixel
+        const Ray ray = scene.camera.primaryRay(cx, flippedRow(crow, h));
+        Hit hit;
+        PixelHit& p = out[static_cast<std::size_t>(row) * w + x];
+        if (!intersector.closestHit(ray, 0.0, hit, counters)) continue;
+        p = {true, hit.ref, surfaceAt(scene, ray, hit, options.triangle.precision).normal};
+      }
   });
   return out;
 }
@@ -83,7 +71,8 @@ std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::str
   for (int spp : {4, 16})
     out.push_back({"samples", std::to_string(spp) + " samples/pixel", base, 1, spp});
   for (Precision p : {Precision::Double, Precision::Single})
-    for (TriangleTest t : {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight}) {
+    for (TriangleTest t :
+         {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight}) {
       TraceOptions o = base;
       o.triangle = {t, p};
       if (t == base.triangle.test && p == base.triangle.precision) continue;
@@ -113,20 +102,22 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) 
   const Integrator integrator(intersector);
   const int w = scene.camera.width(), h = scene.camera.height(), step = config.step;
   Image image(w, h);
-  parallelRows((h + step - 1) / step, threads, [&](int blockRow) {
-    Counters counters;
-    const int row = blockRow * step;
-    for (int x = 0; x < w; x += step) {
-      Color c(0.0);
-      for (int k = 0; k < config.samples; ++k) {
-        double dx = 0.0, dy = 0.0;
-        if (k > 0) sampleOffset(k, dx, dy);
-        c += integrator.pixel(x + dx, h - 1 - row + dy, counters);
+  // One traced pixel per step x step block, repeated over the block.
+  const int blocksX = (w + step - 1) / step, blocksY = (h + step - 1) / step;
+  forEachTile(blocksX, blocksY, 8, threads, [&](const auto& rows, const auto& cols, Counters& c) {
+    for (int by = rows.begin(); by < rows.end(); ++by)
+      for (int bx = cols.begin(); bx < cols.end(); ++bx) {
+        const int row = by * step, x = bx * step;
+        Color color(0.0);
+        for (int k = 0; k < config.samples; ++k) {
+          double dx = 0.0, dy = 0.0;
+          if (k > 0) sampleOffset(k, dx, dy);
+          color += integrator.pixel(x + dx, flippedRow(row, h) + dy, c);
+        }
+        color /= double(config.samples);
+        for (int r = row; r < std::min(h, row + step); ++r)
+          for (int xx = x; xx < std::min(w, x + step); ++xx) image.at(xx, r) = color;
       }
-      c /= double(config.samples);
-      for (int r = row; r < std::min(h, row + step); ++r)
-        for (int xx = x; xx < std::min(w, x + step); ++xx) image.at(xx, r) = c;
-    }
   });
   return image;
 }
@@ -159,9 +150,11 @@ SceneReport measureScene(const Scene& scene, int threads) {
   if (!refFile.empty()) {
     reference = readImage(refFile);
     jpegReference = refFile.extension() == ".jpg";
-    report.reference = refFile.filename().string() + (jpegReference ? " (seed reference, JPEG)" : " (our expected image)");
+    report.reference = refFile.filename().string() +
+                       (jpegReference ? " (seed reference, JPEG)" : " (our expected image)");
     // The conformance test's bound: our render, JPEG-encoded, within 0.6.
-    report.jpegNoiseRmse = jpegReference ? 0.6 : compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
+    report.jpegNoiseRmse =
+        jpegReference ? 0.6 : compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
   } else {
     ReportConfig high{"reference", "64 samples/pixel", TraceOptions{}, 1, 64};
     reference = quantize(renderConfig(scene, high, threads));
@@ -196,7 +189,8 @@ SceneReport measureScene(const Scene& scene, int threads) {
         continue;
       }
       if (!a.found) continue;
-      const double angle = std::atan2(glm::length(glm::cross(a.normal, b.normal)), glm::dot(a.normal, b.normal));
+      const double angle =
+          std::atan2(glm::length(glm::cross(a.normal, b.normal)), glm::dot(a.normal, b.normal));
       row.maxNormalDegrees = std::max(row.maxNormalDegrees, glm::degrees(angle));
     }
     row.hitDiffers = hits.empty() ? 0.0 : double(differ) / double(hits.size());
@@ -230,7 +224,8 @@ struct Canvas {
         const unsigned char* g = kGlyphs[at - kGlyphChars];
         for (int r = 0; r < 5; ++r)
           for (int b = 0; b < 3; ++b)
-            if (g[r] & (4 >> b)) fill(x + b * scale, y + r * scale, x + (b + 1) * scale, y + (r + 1) * scale, c);
+            if (g[r] & (4 >> b))
+              fill(x + b * scale, y + r * scale, x + (b + 1) * scale, y + (r + 1) * scale, c);
       }
       x += 4 * scale;
     }
@@ -239,7 +234,7 @@ struct Canvas {
 
 const Color& groupColor(const std::string& group) {
   static const Color colors[] = {{0.85, 0.2, 0.1}, {0.1, 0.5, 0.9}, {0.1, 0.65, 0.2},
-                                 {0.6, 0.2, 0.8}, {0.9, 0.6, 0.0}, {0.3, 0.3, 0.3}};
+                                 {0.6, 0.2, 0.8},  {0.9, 0.6, 0.0}, {0.3, 0.3, 0.3}};
   static const char* groups[] = {"progressive", "samples", "triangle", "precision", "accel"};
   for (int i = 0; i < 5; ++i)
     if (group == groups[i]) return colors[i];
@@ -258,11 +253,17 @@ Image plotErrorAgainstTime(const SceneReport& report, int width, int height) {
     y0 = std::min(y0, r.rmse + kFloor), y1 = std::max(y1, r.rmse + kFloor);
   }
   if (report.rows.empty()) return image;
-  const int dx0 = int(std::floor(std::log10(x0))), dx1 = std::max(dx0 + 1, int(std::ceil(std::log10(x1))));
-  const int dy0 = int(std::floor(std::log10(y0))), dy1 = std::max(dy0 + 1, int(std::ceil(std::log10(y1))));
+  const int dx0 = int(std::floor(std::log10(x0))),
+            dx1 = std::max(dx0 + 1, int(std::ceil(std::log10(x1))));
+  const int dy0 = int(std::floor(std::log10(y0))),
+            dy1 = std::max(dy0 + 1, int(std::ceil(std::log10(y1))));
   const int left = 70, right = width - 40, top = 20, bottom = height - 50;
-  const auto px = [&](double s) { return left + (std::log10(s) - dx0) / (dx1 - dx0) * (right - left); };
-  const auto py = [&](double e) { return bottom - (std::log10(e) - dy0) / (dy1 - dy0) * (bottom - top); };
+  const auto px = [&](double s) {
+    return left + (std::log10(s) - dx0) / (dx1 - dx0) * (right - left);
+  };
+  const auto py = [&](double e) {
+    return bottom - (std::log10(e) - dy0) / (dy1 - dy0) * (bottom - top);
+  };
   const Color grid(0.85), axis(0.0);
   for (int d = dx0; d <= dx1; ++d) {
     const int x = int(px(std::pow(10.0, d)));

@@ -9,6 +9,7 @@
 #include "meshtrace/accel/intersector.h"
 #include "meshtrace/render/spawn.h"
 #include "meshtrace/render/surface.h"
+#include "meshtrace/util/enum_names.h"
 
 namespace meshtrace {
 
@@ -56,7 +57,8 @@ Scene sceneWith(ObjectKind kind) {
 std::vector<TriangleKernel> allTriangleKernels() {
   std::vector<TriangleKernel> out{TriangleKernel{}};
   for (Precision p : {Precision::Double, Precision::Single})
-    for (TriangleTest t : {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight})
+    for (TriangleTest t :
+         {TriangleTest::Cramer, TriangleTest::MollerTrumbore, TriangleTest::Watertight})
       if (!(t == out[0].test && p == out[0].precision)) out.push_back({t, p});
   return out;
 }
@@ -138,8 +140,8 @@ WatertightResult measureWatertightBox(TriangleKernel kernel, int n, const Vec3& 
     int hits = 0;
     for (const TriangleIndices& t : mesh.triangles()) {
       TriangleHit th;
-      hits += tr.intersect(mesh.vertices()[t[0]], mesh.vertices()[t[1]], mesh.vertices()[t[2]],
-                           0.0, kInfinity, th);
+      hits += tr.intersect(mesh.vertices()[t[0]], mesh.vertices()[t[1]], mesh.vertices()[t[2]], 0.0,
+                           kInfinity, th);
     }
     r.multipleHits += hits > 1;
   }
@@ -159,8 +161,8 @@ SelfHitResult measureSelfIntersection(ObjectKind kind, TriangleKernel kernel, do
       case ObjectKind::Mesh: {
         MeshData m;
         for (int k = 0; k < 3; ++k)
-          m.vertices.push_back(shift + scale * Vec3(uniform(rng, -1, 1), uniform(rng, -1, 1),
-                                                    uniform(rng, -1, 1)));
+          m.vertices.push_back(
+              shift + scale * Vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)));
         m.triangles.push_back({0, 1, 2});
         const double b = uniform(rng, 0.05, 0.9), g = uniform(rng, 0.05, 0.95 - b);
         target = (1 - b - g) * m.vertices[0] + b * m.vertices[1] + g * m.vertices[2];
@@ -199,7 +201,8 @@ SelfHitResult measureSelfIntersection(ObjectKind kind, TriangleKernel kernel, do
     }
     // The origin lies in the open half-space in front of the tangent plane,
     // so the first hit is near `target` and, for convex shapes, from outside.
-    const Vec3 origin = target + scale * uniform(rng, 1.0, 4.0) * randomInHemisphere(rng, outward, 0.2);
+    const Vec3 origin =
+        target + scale * uniform(rng, 1.0, 4.0) * randomInHemisphere(rng, outward, 0.2);
     const Ray ray{origin, glm::normalize(target - origin)};
     TraceOptions options;
     options.triangle = kernel;
@@ -209,10 +212,11 @@ SelfHitResult measureSelfIntersection(ObjectKind kind, TriangleKernel kernel, do
     if (!intersector.closestHit(ray, kSpawnTMin, hit, counters)) continue;
     ++r.primaryHits;
     const SurfacePoint sp = surfaceAt(scene, ray, hit, kernel.precision);
-    const Vec3 ng = glm::dot(sp.geometricNormal, ray.direction) < 0 ? sp.geometricNormal
-                                                                    : -sp.geometricNormal;
-    std::vector<Vec3> directions{ray.direction - 2.0 * glm::dot(ray.direction, sp.normal) * sp.normal,
-                                 randomInHemisphere(rng, ng)};
+    const Vec3 ng =
+        glm::dot(sp.geometricNormal, ray.direction) < 0 ? sp.geometricNormal : -sp.geometricNormal;
+    std::vector<Vec3> directions{
+        ray.direction - 2.0 * glm::dot(ray.direction, sp.normal) * sp.normal,
+        randomInHemisphere(rng, ng)};
     if (flat) directions.push_back(randomInHemisphere(rng, -ng));
     for (Vec3 d : directions) {
       d = glm::normalize(d);
@@ -224,13 +228,11 @@ SelfHitResult measureSelfIntersection(ObjectKind kind, TriangleKernel kernel, do
 }
 
 const char* toString(IllConditioned family) {
-  switch (family) {
-    case IllConditioned::Grazing: return "grazing";
-    case IllConditioned::Sliver: return "sliver";
-    case IllConditioned::Huge: return "huge";
-    case IllConditioned::Tiny: return "tiny";
-  }
-  return "?";
+  static constexpr EnumName<IllConditioned> kFamilies[] = {{IllConditioned::Grazing, "grazing"},
+                                                           {IllConditioned::Sliver, "sliver"},
+                                                           {IllConditioned::Huge, "huge"},
+                                                           {IllConditioned::Tiny, "tiny"}};
+  return nameIn(kFamilies, family);
 }
 
 namespace {
@@ -282,7 +284,8 @@ AccuracyResult measureAccuracy(IllConditioned family, TriangleKernel kernel, int
                                std::uint64_t seed) {
   Rng rng(seed);
   AccuracyResult r;
-  const double u = kernel.precision == Precision::Double ? std::ldexp(1.0, -53) : std::ldexp(1.0, -24);
+  const double u =
+      kernel.precision == Precision::Double ? std::ldexp(1.0, -53) : std::ldexp(1.0, -24);
   for (int s = 0; s < samples; ++s) {
     // A canonical triangle in the z = 0 plane and a ray from above, then a
     // random rotation (the rotated values, rounded, are the exact inputs).
@@ -335,8 +338,8 @@ std::vector<StabilityRow> measureStabilityTable(int samplesPerCase) {
         row.selfHits.spawned += s.spawned;
         row.selfHits.reHits += s.reHits;
       }
-    for (IllConditioned f : {IllConditioned::Grazing, IllConditioned::Sliver,
-                             IllConditioned::Huge, IllConditioned::Tiny}) {
+    for (IllConditioned f : {IllConditioned::Grazing, IllConditioned::Sliver, IllConditioned::Huge,
+                             IllConditioned::Tiny}) {
       const AccuracyResult a = measureAccuracy(f, k, samplesPerCase, seed++);
       AccuracyResult& t = row.accuracy;
       t.cases += a.cases;

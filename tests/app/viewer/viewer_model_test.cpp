@@ -169,7 +169,7 @@ TEST(Options, ParsesTheHeadlessSnapshotCommandLine) {
   ASSERT_TRUE(o->pin);
   EXPECT_EQ(o->pin->second, 4);
   ASSERT_EQ(o->shading.size(), 1u);
-  EXPECT_EQ(o->shading[0].second, "FLAT");
+  EXPECT_EQ(o->shading[0].second, Shading::Flat);
 }
 
 }  // namespace

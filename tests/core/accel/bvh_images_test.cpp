@@ -54,11 +54,13 @@ TEST(BvhImages, IdenticalToBruteForceOnEverySeedScene) {
             const int x = static_cast<int>(i % image.width);
             const int row = static_cast<int>(i / image.width);
             ++acc.first;
-            acc.second += integrator.pixel(x, image.height - 1 - row, c) != image.pixels[i];
+            acc.second += integrator.pixel(x, flippedRow(row, image.height), c) != image.pixels[i];
           }
           return acc;
         },
-        [](auto a, auto b) { return std::pair{a.first + b.first, a.second + b.second}; });
+        [](auto a, auto b) {
+          return std::pair{a.first + b.first, a.second + b.second};
+        });
     std::printf("[ figures  ] %-12s %zu of %zu pixels checked against brute force, %zu differ\n",
                 file.stem().string().c_str(), checked, n, differing);
     EXPECT_EQ(differing, 0u) << file;

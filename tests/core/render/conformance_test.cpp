@@ -46,18 +46,17 @@ TEST_P(SeedConformance, MatchesReferenceWithinJpegNoise) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SeedScenes, SeedConformance,
-    ::testing::Values(SeedCase{"combo", false}, SeedCase{"cube", false},
-                      SeedCase{"cylinders", false}, SeedCase{"mask", false},
-                      SeedCase{"mirror", false}, SeedCase{"molecule", false},
-                      SeedCase{"molecule2", false}, SeedCase{"rings", false},
-                      SeedCase{"spheres", false}, SeedCase{"toon_faces", false},
-                      SeedCase{"mask", true}, SeedCase{"rings", true},
-                      SeedCase{"toon_faces", true}),
-    [](const auto& info) {
-      return (info.param.debugAabb ? "debug_aabb_" : "") + info.param.scene;
-    });
+INSTANTIATE_TEST_SUITE_P(SeedScenes, SeedConformance,
+                         ::testing::Values(SeedCase{"combo", false}, SeedCase{"cube", false},
+                                           SeedCase{"cylinders", false}, SeedCase{"mask", false},
+                                           SeedCase{"mirror", false}, SeedCase{"molecule", false},
+                                           SeedCase{"molecule2", false}, SeedCase{"rings", false},
+                                           SeedCase{"spheres", false},
+                                           SeedCase{"toon_faces", false}, SeedCase{"mask", true},
+                                           SeedCase{"rings", true}, SeedCase{"toon_faces", true}),
+                         [](const auto& info) {
+                           return (info.param.debugAabb ? "debug_aabb_" : "") + info.param.scene;
+                         });
 
 // Every reference image in the seed is covered by a case above.
 TEST(SeedConformance, CoversEveryReferenceImage) {

@@ -32,8 +32,7 @@ class OwnScenes : public ::testing::TestWithParam<std::filesystem::path> {};
 TEST_P(OwnScenes, RenderMatchesExpectedResult) {
   const std::filesystem::path& file = GetParam();
   const Scene scene = loadScene(file);
-  const auto expected =
-      test::sourceDir() / "expected_results" / (file.stem().string() + ".png");
+  const auto expected = test::sourceDir() / "expected_results" / (file.stem().string() + ".png");
   ASSERT_TRUE(std::filesystem::exists(expected)) << "no stored render for " << file;
   const ImageDifference d = compareImages(quantize(render(scene, {})), readImage(expected));
   std::printf("[ figures  ] %-18s RMSE %.3f  pixels off >32: %.4f%%  max %d\n",
@@ -48,8 +47,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, OwnScenes, ::testing::ValuesIn(ownScenes()),
 // What the scenes must cover together: every entity, both shading modes,
 // several lights, mirrors, one mesh shaded both ways, and a large mesh.
 TEST(OwnScenesCoverage, UseEveryEntityBothShadingModesAndALargeMesh) {
-  std::size_t spheres = 0, planes = 0, cylinders = 0, meshes = 0, maxLights = 0,
-              maxTriangles = 0;
+  std::size_t spheres = 0, planes = 0, cylinders = 0, meshes = 0, maxLights = 0, maxTriangles = 0;
   bool mirror = false;
   std::set<std::pair<std::filesystem::path, Shading>> meshModes;
   const auto scenes = ownScenes();

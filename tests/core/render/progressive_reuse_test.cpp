@@ -82,7 +82,8 @@ TEST_F(ProgressiveReuse, ProbesAfterAColourJobAreThoseOfTheNewCamera) {
   const SceneIntersector intersector(*scene, TraceOptions{});
   for (int row = 0; row < frame.height; ++row)
     for (int col = 0; col < frame.width; ++col) {
-      const PixelProbe expected = probePixel(intersector, camera, col, frame.height - 1 - row);
+      const PixelProbe expected =
+          probePixel(intersector, camera, col, flippedRow(row, frame.height));
       const PixelProbe* p = frame.probeAt(col, row);
       ASSERT_NE(p, nullptr);
       EXPECT_EQ(p->object, expected.object) << col << "," << row;

@@ -70,7 +70,7 @@ void expectEachPixelAsAlone(const Scene& scene) {
   int differing = 0;
   for (int row = 0; row < image.height; ++row)
     for (int x = 0; x < image.width; ++x)
-      differing += integrator.pixel(x, image.height - 1 - row, alone) != image.at(x, row);
+      differing += integrator.pixel(x, flippedRow(row, image.height), alone) != image.at(x, row);
   EXPECT_EQ(differing, 0);
   EXPECT_EQ(packets.primaryRays, alone.primaryRays);
   EXPECT_EQ(packets.shadowRays, alone.shadowRays);
@@ -111,9 +111,9 @@ TEST(DebugAabb, CountsTheBoxesEachPrimaryRayMeets) {
   const auto dir = test::scratchDir();
   test::writeFile(dir / "tri.off", test::kTriangleOff);
   // Two copies of the same mesh: rays through it meet two boxes, the rest none.
-  const Scene scene = loadScene(test::writeFile(
-      dir / "two.sce", test::kCameraLine + "mesh tri.off FLAT " + test::kMaterial + "\n" +
-                           "mesh tri.off PHONG " + test::kMaterial + "\n"));
+  const Scene scene = loadScene(
+      test::writeFile(dir / "two.sce", test::kCameraLine + "mesh tri.off FLAT " + test::kMaterial +
+                                           "\n" + "mesh tri.off PHONG " + test::kMaterial + "\n"));
   const BoxHitCounts counts = countBoxHits(scene, 1);
   EXPECT_EQ(counts.maxCount, 2);
   EXPECT_EQ(counts.counts[3 * 8 + 4], 2) << "the centre pixel looks at the mesh";
@@ -126,9 +126,8 @@ TEST(DebugAabb, CountsTheBoxesEachPrimaryRayMeets) {
 TEST(DebugAabb, ABoxAroundTheEyeCountsForEveryPixel) {
   const auto dir = test::scratchDir();
   test::writeFile(dir / "big.off", "OFF\n3 1 0\n-10 -10 -10\n10 10 10\n10 -10 10\n3 0 1 2\n");
-  const Scene scene =
-      loadScene(test::writeFile(dir / "in.sce", test::kCameraLine + "mesh big.off FLAT " +
-                                                    test::kMaterial + "\n"));
+  const Scene scene = loadScene(test::writeFile(
+      dir / "in.sce", test::kCameraLine + "mesh big.off FLAT " + test::kMaterial + "\n"));
   const BoxHitCounts counts = countBoxHits(scene);
   for (int n : counts.counts) EXPECT_EQ(n, 1);
 }

@@ -20,8 +20,7 @@ Scene gridAndSphere() {
   return s;
 }
 
-constexpr AccelMethod kMethods[] = {AccelMethod::None, AccelMethod::BoundingBox,
-                                    AccelMethod::Bvh};
+constexpr AccelMethod kMethods[] = {AccelMethod::None, AccelMethod::BoundingBox, AccelMethod::Bvh};
 
 // A ray from below the grid through it: the grid triangle at t = 1 is the
 // nearest hit, unless the ray is said to start on that very triangle.

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include "meshtrace/geometry/aabb.h"
@@ -12,7 +13,10 @@ namespace meshtrace {
 
 enum class Shading : std::uint8_t { Flat, Phong };
 
+// "FLAT", "PHONG", as the scene format writes them.
 const char* toString(Shading shading);
+// Throws std::invalid_argument for an unknown name.
+Shading parseShading(std::string_view name);
 
 using TriangleIndices = std::array<std::uint32_t, 3>;
 

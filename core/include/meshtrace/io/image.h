@@ -9,6 +9,11 @@
 
 namespace meshtrace {
 
+// Images are stored top row first, as image files are; the camera's y runs
+// from the bottom (y = 0 is the bottom row). The one conversion between a
+// storage row and a camera y, either way (it is its own inverse).
+constexpr int flippedRow(int row, int height) { return height - 1 - row; }
+
 struct Image {
   int width = 0;
   int height = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // Everything the viewer's pixel inspector shows about one pixel, recorded
-// while the renderer's own shading routine (whitted.h) traces it: the hit, its normals, the shading per light (and what
-// blocks a shadowed light), each reflection bounce and the mesh boxes the ray
+// while the renderer's own shading routine (whitted.h) traces it: the hit, its normals, the shading
+// per light (and what blocks a shadowed light), each reflection bounce and the mesh boxes the ray
 // entered. Its colour is the Integrator's, to the bit (a test holds it to
 // that), so what it explains is what was rendered.
 #include <cstdint>
@@ -94,6 +94,5 @@ std::int32_t objectIndex(const Scene& scene, const PrimitiveRef& ref);
 // The traversal cost of a query: the BVH nodes it entered, the mesh boxes it
 // tested and the primitives (triangles, spheres, planes, cylinders) it tested.
 std::uint64_t traversalCost(const Counters& counters);
-
 
 }  // namespace meshtrace

@@ -1,6 +1,7 @@
 #pragma once
 // Whitted-style shading: ambient, diffuse and specular per light, hard
-// shadows, and mirror reflection up to the scene's depth.
+// shadows, and mirror reflection up to the scene's depth (the recursion
+// itself is in render/whitted.h).
 #include "meshtrace/accel/intersector.h"
 
 namespace meshtrace {
@@ -21,19 +22,13 @@ class Integrator {
   // traced as one packet, the shadow rays toward each light from their hits
   // as another, and their mirror reflections as the next level's packet (up
   // to kMaxPacketLights lights; with more, each ray's shading goes on alone).
-  void quad(double x, double y, Color out[4], Counters& counters) const;
+  void quad(double x, double y, Color out[kPacketSize], Counters& counters) const;
   // The same through another camera (the viewer's, once moved).
   Color pixel(const Camera& camera, double x, double y, Counters& counters) const;
 
   const SceneIntersector& intersector() const { return intersector_; }
 
  private:
-  // What quad() does at recursion level `level`, for the rays named in
-  // `active` (bit r: rays[r], leaving start[r] when `start` is given), into
-  // out[r]; the other slots are left alone.
-  void shadePacket(const Ray* rays, std::uint32_t active, int level, const PrimitiveRef* start,
-                   Color* out, Counters& counters) const;
-
   const SceneIntersector& intersector_;
 };
 

@@ -9,15 +9,11 @@
 // each (anti-aliasing). Each finished tile is published at once; a viewer
 // copies the tiles that changed since its last look. Starting a new job
 // cancels the one in flight: workers check between pixels.
-#include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
-#include <thread>
 #include <vector>
 
 #include "meshtrace/accel/intersector.h"
@@ -38,10 +34,10 @@ class PreparedScene {
   const SceneIntersector& intersector() const;
 
  private:
+  struct Lazy;  // the intersector and the flag that builds it once
   std::shared_ptr<const Scene> scene_;
   TraceOptions options_;
-  mutable std::once_flag built_;
-  mutable std::unique_ptr<SceneIntersector> intersector_;
+  std::unique_ptr<Lazy> lazy_;
 };
 
 struct ProgressiveSettings {
@@ -123,33 +119,11 @@ class ProgressiveRenderer {
   // Blocks until the current job finishes, or the timeout; true if finished.
   bool waitUntilFinished(double timeoutMs) const;
 
-  int threads() const { return static_cast<int>(workers_.size()); }
-
-  struct Job;
-  struct Buffers;
-  class BufferPool;
+  int threads() const;
 
  private:
-  void workerLoop(int worker);
-  // Between pixels: waits while `worker` is paused; false once `job` is cancelled.
-  bool mayGoOn(const Job& job, int worker);
-  // Until done() (part of `job` that other workers hold); false if the job
-  // is cancelled first.
-  bool waitFor(const Job& job, const std::function<bool()>& done);
-  void resumeCancelled();
-
-  std::function<void(const PassFinished&)> passFinished_;
-  std::shared_ptr<BufferPool> pool_;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::shared_ptr<Job> current_;
-  std::uint64_t generation_ = 0;
-  bool stopping_ = false;
-  std::mutex pauseMutex_;
-  std::condition_variable resumed_;
-  alignas(64) std::atomic<int> paused_{0};          // read between pixels: a line of its own
-  alignas(64) std::atomic<int> waitingForWork_{0};  // workers waiting for work others hold
-  std::vector<std::thread> workers_;
+  class Impl;  // the workers, the current job and their locks (progressive.cpp)
+  std::unique_ptr<Impl> impl_;
 };
 
 // The offset in [-0.5, 0.5)^2 of anti-aliasing sample k >= 1 (an R2
