@@ -62,14 +62,15 @@ double primaryMrays(const Scene& scene, std::size_t minTriangles, const RaySet& 
 }  // namespace
 
 void printCrossover() {
-  std::printf("| mesh | triangles per mesh | Mrays/s, BVH | Mrays/s, no BVH | BVH / none |\n"
-              "|---|---:|---:|---:|---:|\n");
+  std::printf(
+      "| mesh | triangles per mesh | Mrays/s, BVH | Mrays/s, no BVH | BVH / none |\n"
+      "|---|---:|---:|---:|---:|\n");
   const auto row = [](const char* shape, const Scene& scene) {
     const RaySet rays = primaryRays(scene);
     const double with = primaryMrays(scene, 0, rays);
     const double without = primaryMrays(scene, std::numeric_limits<std::size_t>::max(), rays);
-    std::printf("| %s | %zu | %.2f | %.2f | %.2f |\n", shape,
-                scene.meshes[0].triangles().size(), with, without, with / without);
+    std::printf("| %s | %zu | %.2f | %.2f | %.2f |\n", shape, scene.meshes[0].triangles().size(),
+                with, without, with / without);
     std::fflush(stdout);
   };
   row("square", gridOfMeshes([](const Vec3& c) { return makeGrid(c, 2.0, 1); }));
@@ -78,9 +79,8 @@ void printCrossover() {
   row("square", gridOfMeshes([](const Vec3& c) { return makeGrid(c, 2.0, 2); }));
   const int sizes[][2] = {{3, 2}, {4, 2}, {4, 3}, {4, 4}, {6, 4}, {8, 4}, {8, 8}};
   for (const auto& [ring, tube] : sizes)
-    row("torus", gridOfMeshes([ring, tube](const Vec3& c) {
-          return makeTorus(c, 1.0, 0.35, ring, tube);
-        }));
+    row("torus",
+        gridOfMeshes([ring, tube](const Vec3& c) { return makeTorus(c, 1.0, 0.35, ring, tube); }));
 }
 
 }  // namespace meshtrace::bench

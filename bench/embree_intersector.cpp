@@ -29,9 +29,9 @@ EmbreeIntersector::EmbreeIntersector(const Scene& scene, RTCBuildQuality quality
     const Mesh& mesh = scene.meshes[m];
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(g, quality);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-        mesh.vertices().size()));
+    auto* v =
+        static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                    3 * sizeof(float), mesh.vertices().size()));
     for (std::size_t i = 0; i < mesh.vertices().size(); ++i)
       for (int k = 0; k < 3; ++k) v[3 * i + k] = static_cast<float>(mesh.vertices()[i][k]);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
@@ -43,8 +43,7 @@ EmbreeIntersector::EmbreeIntersector(const Scene& scene, RTCBuildQuality quality
     rtcReleaseGeometry(g);
   }
   rtcCommitScene(scene_);
-  buildSeconds_ =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 EmbreeIntersector::~EmbreeIntersector() {

@@ -1,11 +1,9 @@
 #pragma once
 // Whole runs (load, build, render, write), as `raytrace SCENE OUT.png` makes
 // them, each in a process of its own. Run side by side in one process, the
-// engines shared its memory state: once our large buffers went on huge
-// pages, the Embree-backed run that followed ours found free huge pages
-// and took 420-456 ms on knot1m instead of 484-517 ms, while ours did not
-// move, so the figure measured the order of the runs as much as the
-// engines.
+// engines would share its memory state (a run finds the huge pages the one
+// before it freed), so the figure would measure the order of the runs as
+// much as the engines.
 #include <filesystem>
 #include <string>
 

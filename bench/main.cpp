@@ -34,16 +34,12 @@ double secondsSince(Clock::time_point start) {
 // kSlowRenderLimit.
 constexpr double kSubsetSeconds = 0.5;
 constexpr double kSlowRenderLimit = 30.0;
-// Whole runs of each engine, alternating, for the full-run figure. With
-// five, the medians of the ~70 ms CGAL scenes moved by up to a tenth
-// between benches (refined_elephant 0.97x, then 1.07x); in fifteen
-// alternating runs of each, its single runs spread over 62-90 ms (ours)
-// and 67-112 ms (Embree-backed). With eleven, toon_faces still moved from
-// 0.94x to 1.08x between two benches of nearly the same code. The runs of
-// a scene are spread over rounds through all scenes, seconds apart: run
-// back to back, mask's twenty-one pairs once came out at 1.07x (paired
-// 1.07x) in a slow spell of the machine, where three benches of mask
-// alone gave 0.90-0.93x.
+// Whole runs of each engine, alternating, for the full-run figure: single
+// runs of a ~70 ms scene spread over half their time, so fewer runs let a
+// scene's median move by a tenth between benches of the same code. The
+// runs of a scene are spread over rounds through all scenes, seconds
+// apart, so that one slow spell of the shared machine cannot cover all of
+// a scene's runs.
 constexpr int kFullRunRounds = 3;
 constexpr int kFullRunsPerRound = 7;
 
@@ -243,8 +239,9 @@ void verify(const SceneIntersector& bvh, const SceneIntersector& none, const Ray
     const bool fa = bvh.closestHit(primary.rays[i], 0.0, a, c);
     const bool fb = none.closestHit(primary.rays[i], 0.0, b, c);
     ++f.verifiedRays;
-    f.differences += fa != fb || (fa && (a.t != b.t || a.ref.object != b.ref.object ||
-                                         a.ref.triangle != b.ref.triangle));
+    f.differences +=
+        fa != fb ||
+        (fa && (a.t != b.t || a.ref.object != b.ref.object || a.ref.triangle != b.ref.triangle));
   }
   for (std::size_t i = 0; i < shadow.rays.size(); i += stride) {
     ++f.verifiedRays;
@@ -298,8 +295,8 @@ std::optional<SceneFigures> measure(const std::filesystem::path& file,
       const double estimate = primary.rays.size() / (e.rays.primary[1] * 1e6) +
                               shadow.rays.size() / (e.rays.shadow[1] * 1e6);
       if (estimate < kSlowRenderLimit)
-        e.renderMs = fullRunMs(toString(m), file,
-                               outDir / (f.name + "-" + toString(m) + ".png"), threads);
+        e.renderMs =
+            fullRunMs(toString(m), file, outDir / (f.name + "-" + toString(m) + ".png"), threads);
     }
   }
   return f;
@@ -343,8 +340,9 @@ std::string ratio(std::optional<double> a, std::optional<double> b) {
 void printScene(const SceneFigures& f, int threads) {
   std::printf("\n### %s: %zu triangles, loaded in %.1f ms\n\n", f.name.c_str(), f.triangles,
               f.loadMs);
-  std::printf("| figure | ours | Embree robust | Embree HQ | ours / robust | ours / HQ | aabb "
-              "(/ robust) | none (/ robust) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf(
+      "| figure | ours | Embree robust | Embree HQ | ours / robust | ours / HQ | aabb "
+      "(/ robust) | none (/ robust) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
   const auto row = [&](const char* label, auto get, const char* format) {
     const auto v = [&](const EngineFigures& e) { return get(e); };
     const auto slowCell = [&](const EngineFigures& e) {
@@ -359,25 +357,32 @@ void printScene(const SceneFigures& f, int threads) {
   };
   using E = EngineFigures;
   using O = std::optional<double>;
-  row("build ms", [](const E& e) { return e.buildMs; }, "%.1f");
-  row("bytes / triangle, structure", [](const E& e) { return e.structureBytesPerTriangle; },
+  row(
+      "build ms", [](const E& e) { return e.buildMs; }, "%.1f");
+  row(
+      "bytes / triangle, structure", [](const E& e) { return e.structureBytesPerTriangle; },
       "%.1f");
-  row("bytes / triangle, with the mesh", [](const E& e) { return e.bytesPerTriangle; }, "%.1f");
+  row(
+      "bytes / triangle, with the mesh", [](const E& e) { return e.bytesPerTriangle; }, "%.1f");
   const std::string all = std::to_string(threads) + " threads";
   const auto mr = [](const E& e, double v) { return e.measured ? O(v) : O(); };
-  row("primary Mrays/s, 1 thread, ray by ray", [&](const E& e) { return mr(e, e.rays.primary[0]); },
+  row(
+      "primary Mrays/s, 1 thread, ray by ray", [&](const E& e) { return mr(e, e.rays.primary[0]); },
       "%.3g");
   row(("primary Mrays/s, " + all + ", ray by ray").c_str(),
       [&](const E& e) { return mr(e, e.rays.primary[1]); }, "%.3g");
   const auto packets = [](const E& e) { return e.rays.primaryPacket[0] > 0; };
-  row("primary Mrays/s, 1 thread, 2x2 packets",
+  row(
+      "primary Mrays/s, 1 thread, 2x2 packets",
       [&](const E& e) { return packets(e) ? O(e.rays.primaryPacket[0]) : O(); }, "%.3g");
   row(("primary Mrays/s, " + all + ", 2x2 packets").c_str(),
       [&](const E& e) { return packets(e) ? O(e.rays.primaryPacket[1]) : O(); }, "%.3g");
-  row("shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.3g");
+  row(
+      "shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.3g");
   row(("shadow Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.shadow[1]); },
       "%.3g");
-  row("full run ms (load, build, render, write)", [](const E& e) { return e.renderMs; }, "%.0f");
+  row(
+      "full run ms (load, build, render, write)", [](const E& e) { return e.renderMs; }, "%.0f");
   if (f.verifiedRays)
     std::printf("\nBVH against brute force on %zu of these rays: %zu differ.\n", f.verifiedRays,
                 f.differences);
@@ -427,7 +432,8 @@ int main(int argc, char** argv) {
   int threads = static_cast<int>(std::thread::hardware_concurrency());
   bool fast = false, crossover = false;
   cli.add_option("scenes", scenes, "Scene files to measure");
-  cli.add_option("--threads", threads, "Threads for the 'all threads' figures")->capture_default_str();
+  cli.add_option("--threads", threads, "Threads for the 'all threads' figures")
+      ->capture_default_str();
   cli.add_flag("--fast", fast, "Skip the aabb and none measurements");
   cli.add_option("--out", outDir, "Folder for the rendered images")->capture_default_str();
   cli.add_option("--make-scene", makeScene, "Write MESH.sce framing MESH.off, and exit");

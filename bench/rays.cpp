@@ -28,8 +28,7 @@ RaySet primaryRays(const Scene& scene) {
   return set;
 }
 
-RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector,
-                  const RaySet& primary) {
+RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector, const RaySet& primary) {
   RaySet set;
   if (scene.lights.empty()) return set;
   const Light& light = scene.lights.front();
@@ -37,8 +36,7 @@ RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector,
   for (const Ray& ray : primary.rays) {
     Hit hit;
     if (!intersector.closestHit(ray, kSpawnTMin, hit, c)) continue;
-    const SurfacePoint sp =
-        surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
+    const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
     const Vec3 l = glm::normalize(light.position - sp.point);
     if (!(glm::dot(sp.normal, l) > 0.0)) continue;
     const Ray shadow{spawnOrigin(sp, l), l};

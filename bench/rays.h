@@ -26,17 +26,14 @@ struct RaySet {
   // What a packet-tracing engine calls per ray set: packets plus the rest.
   std::size_t packetCalls() const { return packets + (rays.size() - kPacketSize * packets); }
 
-  const PrimitiveRef* startOf(std::size_t i) const {
-    return start.empty() ? nullptr : &start[i];
-  }
+  const PrimitiveRef* startOf(std::size_t i) const { return start.empty() ? nullptr : &start[i]; }
 };
 
 // One ray through every pixel of the scene's camera, quad by quad.
 RaySet primaryRays(const Scene& scene);
 // From each primary hit whose normal faces the first light, the shadow ray
 // the integrator would cast toward it (found with `intersector`).
-RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector,
-                  const RaySet& primary);
+RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector, const RaySet& primary);
 
 // Seconds for trace(i) over every stride-th i < n, on `threads` threads,
 // best of up to `passes` passes (stopping once a second has been spent).

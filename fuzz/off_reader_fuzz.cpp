@@ -14,8 +14,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace meshtrace;
-  static const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / ("meshtrace-fuzz-" + std::to_string(getpid()) + ".off");
+  static const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                            ("meshtrace-fuzz-" + std::to_string(getpid()) + ".off");
   {
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));

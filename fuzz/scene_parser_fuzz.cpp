@@ -17,8 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Scene scene = parseScene(text, "fuzz-input.sce");
     const SceneIntersector intersector(scene, TraceOptions{});
     Counters counters;
-    Integrator(intersector)
-        .pixel(scene.camera.width() / 2, scene.camera.height() / 2, counters);
+    Integrator(intersector).pixel(scene.camera.width() / 2, scene.camera.height() / 2, counters);
   } catch (const InputError&) {
   }
   return 0;

@@ -58,8 +58,7 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file) {
   } catch (const std::bad_alloc&) {
     // Files within the size limits can still need more memory than the
     // machine has: say so rather than abort.
-    std::fprintf(stderr, "error: %s: not enough memory to load the scene\n",
-                 file.string().c_str());
+    std::fprintf(stderr, "error: %s: not enough memory to load the scene\n", file.string().c_str());
     return std::nullopt;
   }
 }
@@ -97,8 +96,10 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
     }
     if (!wanted(*scene)) continue;
     const auto out = outDir / (prefix + file.stem().string() + ".png");
-    if (imageDestinationUsable(out) && job(*scene, out)) ++done;
-    else ++failures;
+    if (imageDestinationUsable(out) && job(*scene, out))
+      ++done;
+    else
+      ++failures;
   }
   std::printf("%d scenes written to %s, %d failed\n", done, outDir.string().c_str(), failures);
   return failures == 0 ? 0 : 1;

@@ -30,8 +30,9 @@ int main(int argc, char** argv) {
   CLI::App cli{"Write the bounding-box debug image of .sce scenes."};
   bool all = false;
   std::vector<std::string> args;
-  cli.add_flag("--all", all,
-               "Every scene with meshes under DIR (default scenes/) into OUTDIR (default results/)");
+  cli.add_flag(
+      "--all", all,
+      "Every scene with meshes under DIR (default scenes/) into OUTDIR (default results/)");
   cli.add_option("args", args, "SCENE.sce OUT.png, or with --all: [DIR] [OUTDIR]");
   CLI11_PARSE(cli, argc, argv);
 

@@ -23,9 +23,11 @@ int main(int argc, char** argv) {
   };
   const std::vector<Output> outputs = {
       {"shading_modes/icosphere.off", [] { return makeIcosphere(Vec3(-1.4, 1.0, 0.0), 1.0, 2); }},
-      {"shading_modes/torus.off", [] { return makeTorus(Vec3(1.5, 0.35, 0.3), 1.0, 0.35, 24, 12); }},
+      {"shading_modes/torus.off",
+       [] { return makeTorus(Vec3(1.5, 0.35, 0.3), 1.0, 0.35, 24, 12); }},
       {"shading_modes/floor.off", [] { return makeGrid(Vec3(0.0), 12.0, 8); }},
-      {"knot/knot.off", [] { return makeTorusKnot(Vec3(0.0, 1.3, 0.0), 0.45, 2, 3, 0.42, 1024, 52); }},
+      {"knot/knot.off",
+       [] { return makeTorusKnot(Vec3(0.0, 1.3, 0.0), 0.45, 2, 3, 0.42, 1024, 52); }},
       {"mirror_hall/torus.off", [] { return makeTorus(Vec3(0.0, 0.55, 0.0), 0.8, 0.3, 64, 32); }},
       {"everything/icosphere.off", [] { return makeIcosphere(Vec3(1.6, 0.7, 0.4), 0.7, 3); }},
       {"grid_room/room.off",

@@ -22,7 +22,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, DebugAabbBadInput, ::testing::ValuesIn(test::bad
                          [](const auto& info) { return info.param.name; });
 
 // Writes scene.sce with `meshLines` after the standard camera, and tri.off.
-std::filesystem::path sceneWithMeshes(const std::filesystem::path& dir, const std::string& meshLines) {
+std::filesystem::path sceneWithMeshes(const std::filesystem::path& dir,
+                                      const std::string& meshLines) {
   test::writeFile(dir / "tri.off", test::kTriangleOff);
   return test::writeFile(dir / "scene.sce", test::kCameraLine + meshLines);
 }

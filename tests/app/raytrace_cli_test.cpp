@@ -72,8 +72,8 @@ TEST(RaytraceCli, GivesTheSameImageForOneAndTwoThreads) {
 
 TEST(RaytraceCli, WarnsButRendersWhenUpIsParallelToTheView) {
   const auto dir = test::scratchDir();
-  test::writeFile(dir / "up.sce", "# from above\ncamera 0 5 0  0 0 0  0 1 0  45  8 6\n" +
-                                      test::kSphereLine);
+  test::writeFile(dir / "up.sce",
+                  "# from above\ncamera 0 5 0  0 0 0  0 1 0  45  8 6\n" + test::kSphereLine);
   const test::ToolResult r =
       test::runTool(raytraceTool(), {(dir / "up.sce").string(), (dir / "out.png").string()}, dir);
   ASSERT_TRUE(r.exited) << test::describe(r);
@@ -126,8 +126,8 @@ TEST(RaytraceCli, RefusesAReadOnlyFolderLeavingTheOldFile) {
   const auto dir = folderWithGoodScene();
   std::filesystem::create_directory(dir / "ro");
   test::writeFile(dir / "ro" / "out.png", test::kOldOutput);
-  std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_read |
-                                               std::filesystem::perms::owner_exec);
+  std::filesystem::permissions(
+      dir / "ro", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   test::expectRefusal(raytraceTool(), renderArgs(dir, "ro/out.png"), dir / "ro", {"out.png"},
                       dir / "ro" / "out.png");
   std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
@@ -149,9 +149,10 @@ TEST(RaytraceCli, AllRendersTheGoodScenesAndNamesTheBadOnes) {
 
 TEST(RaytraceCli, RefusesBadCommandLines) {
   const auto dir = folderWithGoodScene();
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{}, {"only-one.sce"}, {"--accel", "octree", "a.sce", "b.png"},
-        {"--threads", "-3", "a.sce", "b.png"}}) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{},
+                                               {"only-one.sce"},
+                                               {"--accel", "octree", "a.sce", "b.png"},
+                                               {"--threads", "-3", "a.sce", "b.png"}}) {
     const test::ToolResult r = test::runTool(raytraceTool(), args, dir);
     ASSERT_TRUE(r.exited) << test::describe(r);
     EXPECT_NE(r.exitCode, 0) << test::describe(r);

@@ -31,7 +31,8 @@ std::vector<BadInput> makeBadInputs() {
       badScene("EmptyScene", "\n\n", {"bad.sce", "empty"}),
       badScene("NoCamera", sphere + "\n", {"bad.sce", "camera"}),
       badScene("UnknownKeyword", kCameraLine + "teapot 1 2 3\n", {"bad.sce:2", "teapot"}),
-      badScene("TruncatedEntity", kCameraLine + "sphere 0 0 0 1 0.1\n", {"bad.sce:2", "incomplete"}),
+      badScene("TruncatedEntity", kCameraLine + "sphere 0 0 0 1 0.1\n",
+               {"bad.sce:2", "incomplete"}),
       badScene("WordForNumber", kCameraLine + "light 1 one 1 1 1 1\n", {"bad.sce:2", "'one'"}),
       badScene("NaN", kCameraLine + "light 1 nan 1 1 1 1\n", {"bad.sce:2", "not finite"}),
       badScene("Infinity", kCameraLine + "ambience inf 0 0\n", {"bad.sce:2", "not finite"}),
@@ -66,7 +67,11 @@ std::vector<BadInput> makeBadInputs() {
               {"mesh.off:4", "vertex 1"}),
       badMesh("OffCountsInTheBillions", "OFF\n4000000000 8000000000 0\n0 0 0\n",
               {"4000000000 vertices"}),
-      badMesh("OffBinaryGarbage", std::string("\x7f" "ELF\x02\x01\0\0\x03\0", 10), {"binary"}),
+      badMesh("OffBinaryGarbage",
+              std::string("\x7f"
+                          "ELF\x02\x01\0\0\x03\0",
+                          10),
+              {"binary"}),
   };
 }
 

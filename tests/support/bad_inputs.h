@@ -7,9 +7,9 @@
 namespace meshtrace::test {
 
 struct BadInput {
-  std::string name;   // a test name suffix
-  std::string scene;  // text of bad.sce; empty: the scene file is not written
-  std::string mesh;   // text of mesh.off beside it; empty: not written
+  std::string name;                   // a test name suffix
+  std::string scene;                  // text of bad.sce; empty: the scene file is not written
+  std::string mesh;                   // text of mesh.off beside it; empty: not written
   std::vector<std::string> mentions;  // what stderr must name
 };
 

@@ -18,8 +18,8 @@ ToolResult expectRefusal(const std::filesystem::path& tool, const std::vector<st
   EXPECT_EQ(result.exitCode, 1) << describe(result);
   EXPECT_NE(result.err.find("error"), std::string::npos) << describe(result);
   for (const std::string& m : mentions)
-    EXPECT_NE(result.err.find(m), std::string::npos)
-        << "stderr should mention '" << m << "'\n" << describe(result);
+    EXPECT_NE(result.err.find(m), std::string::npos) << "stderr should mention '" << m << "'\n"
+                                                     << describe(result);
   if (outputExisted) {
     EXPECT_TRUE(readFileBytes(output) == before) << "the old output must be left as it was";
   }
@@ -33,8 +33,8 @@ void expectRefusesBadInput(const std::filesystem::path& tool, const BadInput& in
   if (!input.mesh.empty()) writeFile(dir / "mesh.off", input.mesh);
   std::filesystem::create_directory(dir / "folder.off");
   writeFile(dir / "out.png", kOldOutput);
-  expectRefusal(tool, {(dir / "bad.sce").string(), (dir / "out.png").string()}, dir,
-                input.mentions, dir / "out.png");
+  expectRefusal(tool, {(dir / "bad.sce").string(), (dir / "out.png").string()}, dir, input.mentions,
+                dir / "out.png");
 }
 
 ToolResult expectSuccess(const std::filesystem::path& tool, const std::vector<std::string>& args,

@@ -18,9 +18,9 @@ std::filesystem::path scratchDir();
 }  // namespace meshtrace::test
 
 // Skips the current test, saying why, when the seed data is absent.
-#define MESHTRACE_REQUIRE_SEED()                                                      \
-  do {                                                                                \
-    if (!::meshtrace::test::haveSeed())                                               \
-      GTEST_SKIP() << "seed data not found at " << ::meshtrace::test::seedDir()      \
+#define MESHTRACE_REQUIRE_SEED()                                                       \
+  do {                                                                                 \
+    if (!::meshtrace::test::haveSeed())                                                \
+      GTEST_SKIP() << "seed data not found at " << ::meshtrace::test::seedDir()        \
                    << ": skipping the conformance check against the reference images"; \
   } while (0)

@@ -32,8 +32,10 @@ ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::str
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 1, outFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_addopen(&actions, 2, errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   pid_t pid = 0;
   const auto start = std::chrono::steady_clock::now();
   const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
@@ -67,7 +69,7 @@ ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::str
 }
 
 std::string describe(const ToolResult& r) {
-  std::string s = r.timedOut  ? "timed out"
+  std::string s = r.timedOut ? "timed out"
                   : r.exited ? "exit code " + std::to_string(r.exitCode)
                              : "killed by signal " + std::to_string(r.signal);
   return s + "\n--- stdout:\n" + r.out + "--- stderr:\n" + r.err;

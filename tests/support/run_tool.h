@@ -8,9 +8,9 @@
 namespace meshtrace::test {
 
 struct ToolResult {
-  bool exited = false;   // ended by exit(), not by a signal or the time limit
-  int exitCode = -1;     // valid when `exited`
-  int signal = 0;        // the signal that ended it, if any
+  bool exited = false;  // ended by exit(), not by a signal or the time limit
+  int exitCode = -1;    // valid when `exited`
+  int signal = 0;       // the signal that ended it, if any
   bool timedOut = false;
   std::string out, err;  // stdout and stderr
   double seconds = 0.0;

@@ -8,8 +8,8 @@ namespace meshtrace::gl {
 
 const char* loadFunctions(ProcLoader load) {
   const char* missing = nullptr;
-#define MESHTRACE_GL_LOAD(type, name)                                     \
-  meshtrace_##name = reinterpret_cast<type>(load(#name));                 \
+#define MESHTRACE_GL_LOAD(type, name)                     \
+  meshtrace_##name = reinterpret_cast<type>(load(#name)); \
   if (!meshtrace_##name && !missing) missing = #name;
   MESHTRACE_GL_FUNCTIONS(MESHTRACE_GL_LOAD)
 #undef MESHTRACE_GL_LOAD

@@ -1,4 +1,4 @@
-// Binned SAH build (see bvh.h). Primitives are handled as 32-byte float
+// Binned SAH build (see binary_bvh.h). Primitives are handled as 32-byte float
 // references (box rounded outward, index in the spare lane) that are
 // partitioned in place, so every pass reads memory in order; SSE does the box
 // arithmetic. Float boxes are conservative: rounded outward, they still hold
@@ -35,13 +35,9 @@ constexpr std::uint32_t kParallelSubtrees = 4096;
 constexpr int kMedianDepth = 64;
 // A node of at least twice this many primitives bins every k-th of them,
 // k = n / kBinSample: 4096 to 8191 of them. The top levels' splits are
-// chosen about as well from such a sample; their boxes are then gathered
-// in the pass after the partition, which reads every primitive anyway. On
-// knot1m (1M triangles, 2 threads, twelve alternating fresh processes) the
-// binary build took 126 ms (median) instead of 141; the tree's SAH cost
-// rose 0.5% (36.35 -> 36.53) and was unchanged on the CGAL meshes
-// (armadillo, ChineseDragon, refined_elephant; bunny00 -0.04%), and renders
-// on 1 thread took as long. Samples of 512 raised knot1m's cost 1.9%.
+// chosen about as well from such a sample (the tree's SAH cost rises under
+// 1%; an eighth of it, over 1.5%), and their boxes are then gathered in the
+// pass after the partition, which reads every primitive anyway.
 constexpr std::uint32_t kBinSample = 4096;
 
 float roundDown(double x) {
@@ -249,10 +245,8 @@ class Builder {
 
   // Bins for a node of n primitives: four, and one more per twenty
   // primitives (Embree's rule). A node of a few primitives gains little
-  // from many boundaries, yet pays a sweep over all of them. On knot1m's
-  // binary build (1 thread) one bin per two primitives took 241-253 ms, one
-  // per eight 215-232, this 216-228; primary rays were as fast with each
-  // (80.4-81.5 ns a ray on knot1m, 45.5-46.6 on armadillo, within noise).
+  // from many boundaries, yet pays a sweep over all of them: more bins
+  // build slower and trace no faster.
   int binsFor(std::uint32_t n) const {
     return std::min(bins_, static_cast<int>(4 + std::min<std::uint32_t>(n / 20, kMaxBins)));
   }
@@ -271,8 +265,8 @@ class Builder {
           // one primitive at a time, each update's address came late (at the
           // end of the bin arithmetic), and the next primitive's loads from
           // the bins, issued before it, were often found to read the same
-          // bin and redone: neighbouring primitives share bins. About three
-          // times slower per primitive on knot1m (16-22 ns against 5.5-7.5).
+          // bin and redone: neighbouring primitives share bins. That way was
+          // about three times slower per primitive.
           constexpr std::uint32_t kBatch = 32;
           alignas(16) std::int32_t k[kBatch][4];
           for (std::uint32_t first = b; first < e; first += kBatch) {
@@ -328,15 +322,12 @@ class Builder {
   //
   // Each primitive is swapped to the boundary whatever its side, and the
   // boundary moves by the answer (a branch-free Lomuto partition). On a
-  // real mesh the side is a coin toss for the branch predictor: Hoare's
-  // scan from both ends, a branch per primitive, made the whole binary
-  // build (1 thread, best of eleven) take 14.7 ms instead of 8.9 on
-  // armadillo, 22.0 instead of 16.2 on refined_elephant, 14.0 instead of
-  // 9.7 on toon_faces and 246 instead of 231 on knot1m. The sides hold the
-  // same primitives either way, so every later split and every leaf's set
-  // of primitives is the same; only the order within a leaf differs.
-  // Folding the centroids into the swap loop with masks was slower
-  // (armadillo 10.0-10.1 ms against 8.9-9.1).
+  // real mesh the side is a coin toss for the branch predictor, so Hoare's
+  // scan from both ends, a branch per primitive, builds the small meshes'
+  // trees up to 1.5 times slower. The sides hold the same primitives
+  // either way, so every later split and every leaf's set of primitives is
+  // the same; only the order within a leaf differs. (Folding the
+  // centroids into the swap loop with masks is slower.)
   std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Binner& binner,
                           const Split& split, bool sampled, RangeBounds& left, RangeBounds& right) {
     // The side test compares all three lanes' bins with the split's and
@@ -392,8 +383,7 @@ class Builder {
   // thread's, and moved into the tree in one block when it is done. Taking
   // every node pair from the tree's shared count instead, the two threads
   // fought over that count's cache line (and the depth's beside it) at
-  // every node: knot1m's binary build took 136 ms (median of ten
-  // alternating fresh processes) that way, 112 ms this way. Blocks land in
+  // every node, a fifth of a large build's time. Blocks land in
   // the order subtrees finish, so node numbers can differ from run to run;
   // the tree, and the 8-wide tree collapsed from it, cannot.
   struct Subtree {
@@ -572,9 +562,9 @@ Bvh join(const Bvh& top, std::span<const Bvh> parts, std::span<const std::uint32
 // Several meshes: each mesh's tree is built on its own, in parallel, and
 // the trees joined under one over the meshes' boxes (whose leaves hold one
 // mesh each: with maxLeafSize 1, only single primitives become leaves). One
-// SAH build over all the triangles gave the same ray speed on the seed
-// scenes but took longer (toon_faces' six meshes: 12-14 ms against 11 ms),
-// its first levels binning the whole set on two cores.
+// SAH build over all the triangles gives the same ray speed on the seed
+// scenes but takes longer, its first levels binning the whole set on two
+// cores.
 Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options) {
   const std::size_t meshes = triangles.meshCount();
   if (meshes == 0) return {};

@@ -46,7 +46,7 @@ struct Bvh {
 // heuristic is taken; a node becomes a leaf when that is cheaper and it holds
 // at most maxLeafSize primitives. Large nodes are binned and both subtrees
 // built in parallel; the largest choose their split from a strided sample
-// of their primitives (bvh_build.cpp). The tree does not depend on the
+// of their primitives (binary_bvh.cpp). The tree does not depend on the
 // thread count, though the numbering of its nodes may.
 Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
 // The same over the triangles of a set of meshes (primitive i = triangle i

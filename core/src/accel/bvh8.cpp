@@ -54,8 +54,7 @@ void setChildOrders(Bvh8Node& node) {
       for (int a = 0; a < 3; ++a) key[i] += (octant >> a & 1) ? -centre2[i][a] : centre2[i][a];
     }
     // A stable insertion sort of the used slots: std::stable_sort takes a
-    // heap buffer, and with its allocations it was half of the collapse's
-    // instructions.
+    // heap buffer, whose allocations would cost more than the sort.
     for (int k = 1; k < n; ++k) {
       const int slot = slots[k];
       int j = k;
@@ -77,10 +76,9 @@ void setChildOrders(Bvh8Node& node) {
 // each subtree it finds the least sum when the subtree takes at most j child
 // slots of the node above, for j = 1 to 8, either as one child (an 8-wide
 // node of its own, or a leaf) or split between its two children.
-// On knot1m, against opening the widest child first (the widest of those
-// whose whole subtree still fits, if any): 6.1 children a node instead of
-// 5.1, 13.6 bytes of nodes a triangle instead of 17.1, and 13.1 node visits
-// a hitting primary quad instead of 13.6.
+// Against the greedy collapse (opening the widest child first), it fills
+// more of each node's slots, so the tree has fewer nodes and a ray visits
+// fewer of them.
 class CollapsePlan {
  public:
   explicit CollapsePlan(const Bvh& binary)
@@ -112,8 +110,7 @@ class CollapsePlan {
     }
     // Split between the children: the best share of j slots, j = 2..8. A
     // leaf costs nothing in one slot, so it takes one, and the search over
-    // shares is left to nodes with two interior children (knot1m's plan:
-    // 93M -> 79M instructions).
+    // shares is left to nodes with two interior children.
     const bool leftLeaf = binary_.nodes[node.first].isLeaf();
     const bool rightLeaf = binary_.nodes[node.first + 1].isLeaf();
     float splitCost[kBvhWidth + 1];
@@ -129,8 +126,7 @@ class CollapsePlan {
         continue;
       }
       // Selects, not branches: which share wins depends on the subtrees'
-      // areas, and the mispredicted branches took about a tenth of the
-      // collapse's time on refined_elephant.
+      // areas, which no branch predictor can learn.
 #pragma GCC unroll 8
       for (int k = 2; k < j; ++k) {
         const float c = left[k - 1] + right[j - k - 1];
@@ -159,7 +155,7 @@ class CollapsePlan {
 // Collapses subtrees of the binary tree into 8-wide nodes, depth first.
 // Each subtree's nodes are counted first, so that it is written straight
 // into the tree's one array: grown node by node in a vector of its own and
-// then copied, knot1m's 13 MB of nodes were written three times over, each
+// then copied, a large tree's nodes would be written three times over, each
 // time to pages never touched before.
 class Collapser {
  public:

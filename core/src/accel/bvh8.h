@@ -1,7 +1,7 @@
 #pragma once
 // An 8-wide BVH: each node holds the float boxes of up to eight children in
 // structure-of-arrays form, so that two SSE slab tests check all eight
-// (bvh8_traverse.h). Made by collapsing a binary Bvh. Eight children per
+// (slab_ray.h, traverse.h). Made by collapsing a binary Bvh. Eight children per
 // node rather than four leave a third fewer levels to descend, and a ray's
 // time goes mostly into that chain of dependent node visits.
 #include <cstdint>
@@ -54,7 +54,7 @@ struct Bvh8 {
 };
 
 // Keeps the binary tree's leaves and makes 8-wide nodes of the binary nodes
-// whose boxes' areas sum to the least (bvh8_build.cpp), each node taking the
+// whose boxes' areas sum to the least (bvh8.cpp), each node taking the
 // leaves and 8-wide nodes below it as its up to eight children.
 // Throws std::length_error for a leaf larger than kMaxBvh8Leaf. Takes the
 // binary tree by value: its primitive order moves into the result.

@@ -123,8 +123,7 @@ int candidateLanes(const BlockRay& ray, const TriangleBlock4& block, std::uint32
 // Calls exact(triangle) with the PrimitiveRef of each lane in `lanes` until
 // one call returns true.
 template <typename Mesh, typename Exact>
-bool forEachLane(const TriangleBlock4& block, int lanes,
-                                               const Mesh& mesh, Exact&& exact) {
+bool forEachLane(const TriangleBlock4& block, int lanes, const Mesh& mesh, Exact&& exact) {
   for (; lanes; lanes &= lanes - 1)
     if (exact(mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(lanes))]))) return true;
   return false;

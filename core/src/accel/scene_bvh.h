@@ -7,10 +7,8 @@
 //
 // The meshes share one triangle BVH rather than having one each: a ray
 // crossing several meshes then descends a single hierarchy, where the hit in
-// the nearer mesh culls the farther one's boxes at every level. Primary rays
-// on one thread against rtcIntersect1, median of five alternating runs:
-// rings (two interlocked meshes) 0.56x -> 0.63x, toon_faces (six meshes)
-// 0.64x -> 0.69x; single-mesh scenes unchanged (BENCHMARKS.md).
+// the nearer mesh culls the farther one's boxes at every level (BENCHMARKS.md
+// gives what that is worth on the seed's multi-mesh scenes).
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -47,7 +47,7 @@ inline SlabPadding slabPadding(bool singlePrecisionTriangles, const Vec3& origin
 
 // The ray prepared for float slab tests that stay conservative: every box is
 // tested as if widened by pad.absolute, with the distances scaled by
-// 1 -/+ pad.relative (bvh_ray.h), whatever the float rounding does. The
+// 1 -/+ pad.relative (SlabPadding), whatever the float rounding does. The
 // set-up runs in float on all three axes at once (u = 2^-24 below):
 // - The origin is moved toward the far plane for the near distance (and the
 //   other way for the far one) by shift = a + 2^-21 |o|, a = pad.absolute

@@ -111,9 +111,8 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
 
 Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material)
     : file_(std::move(file)), data_(std::move(data)), shading_(Shading::Flat), material_(material) {
-  // Both passes in parallel: on knot1m (1M triangles, 2 threads) they took
-  // 17-20 ms one after the other, 13-14 ms so; most of the rest is resize's
-  // zero fill of the normals.
+  // Both passes in parallel (most of the rest is resize's zero fill of the
+  // normals).
   const std::vector<Vec3>& v = data_.vertices;
   bounds_ = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, v.size(), kGrain), Aabb{},

@@ -1,8 +1,7 @@
 #pragma once
-// PNG encoding through libpng and zlib. stb's encoder, which the reader
-// still uses for decoding, compressed an 800x600 render in 14-27 ms; zlib's
-// fastest level with the Sub filter takes 3-4 ms and writes smaller files
-// (58 against 66 KB for refined_elephant's frame; BENCHMARKS.md).
+// PNG encoding through libpng and zlib at its fastest level with the Sub
+// filter: several times faster than stb's encoder (which the reader still
+// uses for decoding), with smaller files (BENCHMARKS.md).
 #include <cstdint>
 #include <vector>
 

@@ -215,9 +215,9 @@ class SceneParser {
 
   // The meshes load side by side once the whole scene file has parsed (a
   // mistake anywhere in it is reported before any mesh is read): a mesh of
-  // toon_faces' ~10k triangles loads mostly on one thread, and its six took
-  // 15-22 ms one after the other, 10-14 ms so (2 threads, fresh processes).
-  // Of the meshes that fail, the first in the file is reported.
+  // ~10k triangles loads mostly on one thread, so several small meshes load
+  // faster together than in turn. Of the meshes that fail, the first in the
+  // file is reported.
   std::vector<Mesh> loadMeshes(const std::vector<MeshLine>& lines) const {
     std::vector<std::optional<Mesh>> loaded(lines.size());
     std::vector<std::exception_ptr> failed(lines.size());

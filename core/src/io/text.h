@@ -14,9 +14,9 @@
 namespace meshtrace::text {
 
 // A whole file's bytes. Not zero-filled before the read, and a large file
-// lands on huge pages (build_vector.h): knot1m's 51 MB took 30-37 ms to read
-// into a std::string (a serial zero fill, with a page fault every 4 KiB,
-// then the copy), 15-16 ms this way.
+// lands on huge pages (build_vector.h): a std::string would be zero-filled
+// from one thread, with a page fault every 4 KiB, before the copy, which
+// doubles the time a large mesh takes to read.
 class FileBytes {
  public:
   explicit FileBytes(std::size_t size) : bytes_(size) {}

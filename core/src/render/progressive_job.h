@@ -60,7 +60,6 @@ class BufferPool : public std::enable_shared_from_this<BufferPool> {
 };
 
 struct Job {
-
   std::uint64_t id = 0;
   std::shared_ptr<const PreparedScene> scene;
   Camera camera;

@@ -1,11 +1,10 @@
 #pragma once
 // A vector whose resize leaves trivially constructible elements unwritten,
 // for the build's large buffers that are filled, in parallel, right after
-// they are sized. Value-initialising them first wrote every page from one
-// thread, and the first write to a page is a page fault (about 1 us each on
-// the benchmark machine), before the fill wrote them all again: the 4.5 MB
-// of refined_elephant's triangle blocks took 2.5-2.7 ms in a first build
-// that way, 1.9-2.2 ms without the zero fill (1.7 ms once pages are mapped).
+// they are sized. Value-initialising them first would write every page from
+// one thread, each first write a page fault, before the fill writes them all
+// again: a zero fill costs a large first build about a quarter of its
+// blocks' time.
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -18,11 +17,9 @@ namespace meshtrace {
 // Buffers of kLargePageBytes or more start on a 2 MiB boundary and are
 // offered to the kernel's transparent huge pages (madvise; the kernel may
 // decline, and the memory works either way). A large tree is read in random
-// order, and with 4 KiB pages the address translations miss too: knot1m's
-// primary rays in packets, 1 thread, took 0.94x the time with its nodes and
-// blocks on huge pages, armadillo's and refined_elephant's 0.96x-0.97x,
-// knot1m's shadow rays 0.96x. (Embree's buffers are on huge pages in the
-// same runs.)
+// order, and with 4 KiB pages the address translations miss too: rays on
+// the large meshes take a few percent less time with it (as Embree's
+// buffers are on huge pages).
 inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
 void* allocateLarge(std::size_t bytes, std::size_t align);
 void freeLarge(void* p, std::size_t bytes, std::size_t align) noexcept;

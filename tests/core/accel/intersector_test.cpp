@@ -183,7 +183,8 @@ bool sameHit(bool foundA, const Hit& a, bool foundB, const Hit& b) {
 // any-hit against the closest hit, and for a ray spawned off each hit.
 Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
                       TriangleKernel kernel = {}, const SceneBvhOptions& bvhOptions = {}) {
-  const SceneIntersector bvh(scene, {.accel = AccelMethod::Bvh, .triangle = kernel, .bvh = bvhOptions});
+  const SceneIntersector bvh(scene,
+                             {.accel = AccelMethod::Bvh, .triangle = kernel, .bvh = bvhOptions});
   const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = kernel});
   const Aabb box = sceneBox(scene);
   const bool exactLimit = kernel.test != TriangleTest::Watertight;
@@ -270,7 +271,8 @@ void expectAgreement(const char* label, const Disagreements& d) {
 // force has to keep up).
 TEST(BvhAgreesWithBruteForce, GeneratedMeshes) {
   std::mt19937_64 rng(42);
-  const Scene knot = meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
+  const Scene knot =
+      meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))});
   const Scene ball =
       meshScene({makeMesh("ball", rotated(makeIcosphere(Vec3(0.1, 0.2, 0.3), 1.0, 2), 0.3))});
   const Scene boxes = meshScene({makeMesh("box", makeGriddedBox(Vec3(-1.0), Vec3(1.0), 4)),
@@ -414,14 +416,14 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
       check.spawnedHits += spawnedExpected;
       compareClosest("spawned packet", spawned[r], spawnedFound[r], spawnedHits[r], spawnedExpected,
                      spawnedBrute);
-      const bool expected = (active >> r & 1) &&
-                            brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
+      const bool expected =
+          (active >> r & 1) && brute.occluded(spawned[r], anyTMin, limit[r], c, &start[r]);
       check.blocked += expected;
       if (((packetBlocked >> r & 1) != 0) != expected) {
         ++check.anyHitDifferences;
         if (check.example.empty())
-          check.example = "any-hit packet, " + describe(spawned[r], Hit{}) + " to " +
-                          std::to_string(limit[r]);
+          check.example =
+              "any-hit packet, " + describe(spawned[r], Hit{}) + " to " + std::to_string(limit[r]);
       }
     }
   }

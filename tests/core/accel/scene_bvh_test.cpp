@@ -64,8 +64,8 @@ TEST(SceneBvh, EachTriangleBlockHoldsOneMesh) {
   for (const TriangleBlock4& block : shared.blocks)
     for (int lane = 0; lane < 4 && block.id[lane] != kNoTriangle; ++lane) {
       ++lanes;
-      mixed += shared.triangles[block.id[lane]].sceneIndex !=
-               shared.triangles[block.id[0]].sceneIndex;
+      mixed +=
+          shared.triangles[block.id[lane]].sceneIndex != shared.triangles[block.id[0]].sceneIndex;
     }
   EXPECT_EQ(lanes, shared.triangles.size());
   EXPECT_EQ(mixed, 0u);

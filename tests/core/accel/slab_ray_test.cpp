@@ -1,5 +1,5 @@
 // The float slab tests of the 8-wide BVH are conservative: whenever the
-// exact ray meets a box widened by the padding of bvh_ray.h (within the
+// exact ray meets a box widened by the padding of slab_ray.h (within the
 // padded distance range), BoxRay8 reports the child, and SlabRay::meets
 // (a root leaf's box) reports the box. Checked against
 // a long double reference on random boxes and rays, rays aimed exactly at box
@@ -58,7 +58,7 @@ bool floatHit(const FloatBox& box, int lane, const Ray& ray, const SlabPadding& 
   const BoxRay8 boxRay(SlabRay(ray, pad));
   alignas(16) float tEnter[kBvhWidth];
   const unsigned mask = boxRay.intersect(node, _mm_set1_ps(bvh8::atMost(tMin)),
-                                    _mm_set1_ps(bvh8::atLeast(tMax)), tEnter);
+                                         _mm_set1_ps(bvh8::atLeast(tMax)), tEnter);
   return (mask >> lane) & 1;
 }
 

@@ -17,8 +17,8 @@ struct SlabResult {
   double tEnter = -1.0, tExit = -1.0;
 };
 
-SlabResult slabs(const Aabb& box, const Vec3& origin, const Vec3& direction,
-                 double tMin = 0.0, double tMax = kInfinity) {
+SlabResult slabs(const Aabb& box, const Vec3& origin, const Vec3& direction, double tMin = 0.0,
+                 double tMax = kInfinity) {
   SlabResult r;
   r.hit = intersectSlabs(box, RayInverse(Ray{origin, glm::normalize(direction)}), tMin, tMax,
                          r.tEnter, r.tExit);

@@ -33,8 +33,8 @@ Vec3 specDirection(const CameraSpec& s, double x, double y) {
 }
 
 void expectNear(const Vec3& a, const Vec3& b, double tol = 1e-12) {
-  EXPECT_NEAR(glm::length(a - b), 0.0, tol)
-      << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z << ")";
+  EXPECT_NEAR(glm::length(a - b), 0.0, tol) << "(" << a.x << ", " << a.y << ", " << a.z << ") vs ("
+                                            << b.x << ", " << b.y << ", " << b.z << ")";
 }
 
 TEST(Camera, PrimaryRaysFollowTheSpecFormula) {
@@ -82,7 +82,8 @@ TEST(Camera, ReplacesAnUpVectorParallelToTheView) {
     for (int y = 0; y < 6; ++y)
       for (int x = 0; x < 8; ++x) EXPECT_TRUE(isFinite(camera.primaryRay(x, y).direction));
     // The replacement still gives a non-degenerate image: corners differ.
-    EXPECT_GT(glm::length(camera.primaryRay(0, 0).direction - camera.primaryRay(7, 5).direction), 0.1);
+    EXPECT_GT(glm::length(camera.primaryRay(0, 0).direction - camera.primaryRay(7, 5).direction),
+              0.1);
   }
 }
 

@@ -22,7 +22,8 @@ void expectNear(const Vec3& actual, const Vec3& expected, double tol = kTol) {
 std::vector<Vec3> triangleNormalsOf(const MeshData& mesh) {
   std::vector<Vec3> normals;
   for (const TriangleIndices& t : mesh.triangles)
-    normals.push_back(triangleNormal(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
+    normals.push_back(
+        triangleNormal(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
   return normals;
 }
 
@@ -103,7 +104,8 @@ TEST(VertexNormals, AFlatFanGivesEveryVertexThePlaneNormal) {
     const double a = 2 * std::numbers::pi * i / kSides + 0.1 * i * i;
     fan.vertices.push_back(Vec3(std::cos(a), std::sin(a), 2));
   }
-  for (std::uint32_t i = 0; i < kSides; ++i) fan.triangles.push_back({0, i + 1, (i + 1) % kSides + 1});
+  for (std::uint32_t i = 0; i < kSides; ++i)
+    fan.triangles.push_back({0, i + 1, (i + 1) % kSides + 1});
   for (const Vec3& n : vertexNormalsOf(fan)) expectNear(n, Vec3(0, 0, 1));
 }
 
@@ -174,8 +176,8 @@ TEST(VertexNormals, WeighEachTriangleByItsAngleAtTheVertex) {
   mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1)};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   const std::vector<Vec3> normals = vertexNormalsOf(mesh);
-  const Vec3 expected = glm::normalize(std::numbers::pi / 2 * Vec3(0, 0, 1) +
-                                       std::numbers::pi / 4 * Vec3(1, 0, 0));
+  const Vec3 expected =
+      glm::normalize(std::numbers::pi / 2 * Vec3(0, 0, 1) + std::numbers::pi / 4 * Vec3(1, 0, 0));
   expectNear(normals[0], expected);
 }
 
@@ -193,7 +195,8 @@ TEST(Mesh, PhongMeshesInterpolateVertexNormals) {
   // normal is the vertex normal of corner 0.
   expectNear(mesh.shadingNormal(0, 0.0, 0.0), glm::normalize(Vec3(-1, -1, -1)));
   const Vec3 mid = mesh.shadingNormal(0, 0.5, 0.0);  // halfway from vertex 0 to vertex 2
-  expectNear(mid, glm::normalize(glm::normalize(Vec3(-1, -1, -1)) + glm::normalize(Vec3(-1, 1, -1))));
+  expectNear(mid,
+             glm::normalize(glm::normalize(Vec3(-1, -1, -1)) + glm::normalize(Vec3(-1, 1, -1))));
 }
 
 TEST(Mesh, SwitchingToPhongComputesTheVertexNormals) {

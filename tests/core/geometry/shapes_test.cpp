@@ -14,7 +14,8 @@ Ray rayFrom(const Vec3& origin, const Vec3& direction) {
 
 // The distance at which `shape` is hit, or infinity for a miss.
 template <typename Shape>
-double hitDistance(const Shape& shape, const Ray& ray, double tMin = 0.0, double tLimit = kInfinity) {
+double hitDistance(const Shape& shape, const Ray& ray, double tMin = 0.0,
+                   double tLimit = kInfinity) {
   double t = tLimit;
   const bool hit = intersect(shape, ray, tMin, t);
   EXPECT_EQ(hit, t < tLimit) << "the result and the updated t must agree";
@@ -56,7 +57,8 @@ const Plane kFloor{Vec3(0, -1, 0), Vec3(0, 1, 0), {}};
 TEST(PlaneIntersection, HitsFromEitherSide) {
   EXPECT_NEAR(hitDistance(kFloor, rayFrom(Vec3(3, 4, -2), Vec3(0, -1, 0))), 5.0, kTol);
   EXPECT_NEAR(hitDistance(kFloor, rayFrom(Vec3(3, -4, -2), Vec3(0, 1, 0))), 3.0, kTol);
-  EXPECT_NEAR(hitDistance(kFloor, rayFrom(Vec3(0, 1, 0), Vec3(1, -1, 0))), 2 * std::sqrt(2.0), kTol);
+  EXPECT_NEAR(hitDistance(kFloor, rayFrom(Vec3(0, 1, 0), Vec3(1, -1, 0))), 2 * std::sqrt(2.0),
+              kTol);
   expectNear(normalAt(kFloor), Vec3(0, 1, 0));
 }
 

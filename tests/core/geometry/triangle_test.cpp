@@ -42,8 +42,8 @@ TEST(TriangleIntersection, BarycentricsRebuildTheHitPointOfAGeneralTriangle) {
 
 TEST(TriangleIntersection, HitsFromBehindToo) {
   TriangleHit h;
-  ASSERT_TRUE(intersectTriangle(kA, kB, kC, Ray{Vec3(0.2, 0.3, -2), Vec3(0, 0, 1)}, 0.0,
-                                kInfinity, h));
+  ASSERT_TRUE(
+      intersectTriangle(kA, kB, kC, Ray{Vec3(0.2, 0.3, -2), Vec3(0, 0, 1)}, 0.0, kInfinity, h));
   EXPECT_NEAR(h.t, 2.0, kTol);
 }
 
@@ -88,7 +88,8 @@ TEST(TriangleIntersection, DegenerateTrianglesAreNeverHit) {
   TriangleHit h;
   EXPECT_FALSE(intersectTriangle(kA, kB, Vec3(2, 0, 0), Ray{Vec3(0.5, 0, 5), Vec3(0, 0, -1)}, 0.0,
                                  kInfinity, h));
-  EXPECT_FALSE(intersectTriangle(kA, kA, kA, Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, 0.0, kInfinity, h));
+  EXPECT_FALSE(
+      intersectTriangle(kA, kA, kA, Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, 0.0, kInfinity, h));
 }
 
 }  // namespace

@@ -91,8 +91,8 @@ TEST_P(LosslessFormat, WritesWhatReadsBackExactly) {
   expectSameImage(readImage(path), testPattern());
 }
 
-INSTANTIATE_TEST_SUITE_P(Extensions, LosslessFormat, ::testing::Values(".png", ".bmp", ".ppm", ".PNG"),
-                         [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Extensions, LosslessFormat,
+                         ::testing::Values(".png", ".bmp", ".ppm", ".PNG"), [](const auto& info) {
                            std::string s = info.param + 1;
                            return s;
                          });
@@ -263,8 +263,8 @@ TEST(CompareImages, IdenticalImagesDifferByNothing) {
 TEST(CompareImages, MeasuresRmseOverAllChannelsAndCountsPixelsOver32) {
   Image8 a{2, 2, std::vector<std::uint8_t>(12, 100)};
   Image8 b = a;
-  b.rgb[0] = 103;   // pixel 0: off by 3 in one channel
-  b.rgb[10] = 60;   // pixel 3: off by 40
+  b.rgb[0] = 103;  // pixel 0: off by 3 in one channel
+  b.rgb[10] = 60;  // pixel 3: off by 40
   const ImageDifference d = compareImages(a, b);
   EXPECT_NEAR(d.rmse, std::sqrt((9.0 + 1600.0) / 12.0), 1e-12);
   EXPECT_EQ(d.maxDifference, 40);

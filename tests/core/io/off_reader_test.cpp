@@ -278,7 +278,10 @@ TEST(OffReader, RejectsCountsTooLargeForAnInteger) {
 }
 
 TEST(OffReader, RejectsBinaryGarbageWithNulBytes) {
-  const std::string garbage("\x7f" "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0\x03\0>\0", 20);
+  const std::string garbage(
+      "\x7f"
+      "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0\x03\0>\0",
+      20);
   expectMentions(offErrorOf(garbage), {"mesh.off", "binary"});
 }
 

@@ -30,14 +30,18 @@ TEST(SceneParser, ReadsEveryKeywordInAnyOrderWithComments) {
   test::writeFile(dir / "tri.off", test::kTriangleOff);
   const Scene scene = parseScene(
       "# a comment line\n"
-      "sphere 1 2 3  0.5  " + kMaterial + "  # trailing comment\n"
-      "light 1 1 1  0.5 0.5 0.5\n"
-      "plane 0 -1 0  0 2 0  " + kMaterial + "\n" +
-      kCameraLine +
-      "cylinder 0 0 0  0.25  0 0 3  2  " + kMaterial + "\n"
-      "mesh tri.off PHONG " + kMaterial + "\n"
-      "depth 3\nbackground 0.1 0.2 0.3\nambience 0.4 0.5 0.6\n"
-      "light 2 2 2  1 1 1\n",
+      "sphere 1 2 3  0.5  " +
+          kMaterial +
+          "  # trailing comment\n"
+          "light 1 1 1  0.5 0.5 0.5\n"
+          "plane 0 -1 0  0 2 0  " +
+          kMaterial + "\n" + kCameraLine + "cylinder 0 0 0  0.25  0 0 3  2  " + kMaterial +
+          "\n"
+          "mesh tri.off PHONG " +
+          kMaterial +
+          "\n"
+          "depth 3\nbackground 0.1 0.2 0.3\nambience 0.4 0.5 0.6\n"
+          "light 2 2 2  1 1 1\n",
       dir / "scene.sce");
   EXPECT_EQ(scene.depth, 3);
   EXPECT_EQ(scene.background, Color(0.1, 0.2, 0.3));
@@ -72,9 +76,11 @@ TEST(SceneParser, UsesTheDefaultsWhenKeywordsAreAbsent) {
 }
 
 TEST(SceneParser, LaterSettingsReplaceEarlierOnes) {
-  const Scene scene = parseScene(kCameraLine + "depth 2\nbackground 1 1 1\n"
-                                 "camera 0 0 9  0 0 0  0 1 0  30  20 10\ndepth 5\nbackground 0 0 1\n",
-                                 kSceneName);
+  const Scene scene =
+      parseScene(kCameraLine +
+                     "depth 2\nbackground 1 1 1\n"
+                     "camera 0 0 9  0 0 0  0 1 0  30  20 10\ndepth 5\nbackground 0 0 1\n",
+                 kSceneName);
   EXPECT_EQ(scene.camera.width(), 20);
   EXPECT_EQ(scene.camera.spec().eye, Vec3(0, 0, 9));
   EXPECT_EQ(scene.depth, 5);
@@ -82,9 +88,8 @@ TEST(SceneParser, LaterSettingsReplaceEarlierOnes) {
 }
 
 TEST(SceneParser, AcceptsCrlfLineEndsAndCountsLinesRight) {
-  const Scene scene = parseScene("# dos\r\n" + std::string("camera 0 0 5 0 0 0 0 1 0 45 8 6\r\n") +
-                                     "depth 2\r\n",
-                                 kSceneName);
+  const Scene scene = parseScene(
+      "# dos\r\n" + std::string("camera 0 0 5 0 0 0 0 1 0 45 8 6\r\n") + "depth 2\r\n", kSceneName);
   EXPECT_EQ(scene.depth, 2);
   expectMentions(sceneErrorOf("camera 0 0 5 0 0 0 0 1 0 45 8 6\r\n\r\nbogus\r\n"),
                  {"bad.sce:3", "'bogus'"});
@@ -99,8 +104,8 @@ TEST(SceneParser, ResolvesMeshPathsAgainstTheSceneFolder) {
   const auto dir = test::scratchDir();
   std::filesystem::create_directories(dir / "scenes" / "meshes");
   test::writeFile(dir / "scenes" / "meshes" / "tri.off", test::kTriangleOff);
-  const auto sceneFile = test::writeFile(dir / "scenes" / "s.sce",
-                                         kCameraLine + "mesh meshes/tri.off FLAT " + kMaterial + "\n");
+  const auto sceneFile = test::writeFile(
+      dir / "scenes" / "s.sce", kCameraLine + "mesh meshes/tri.off FLAT " + kMaterial + "\n");
   const Scene scene = loadScene(sceneFile);
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].shading(), Shading::Flat);
@@ -134,7 +139,8 @@ TEST(SceneParser, RejectsAnEmptySceneFile) {
 }
 
 TEST(SceneParser, RejectsASceneWithoutCamera) {
-  expectMentions(sceneErrorOf("# nothing but a sphere\n" + test::kSphereLine), {"bad.sce", "camera"});
+  expectMentions(sceneErrorOf("# nothing but a sphere\n" + test::kSphereLine),
+                 {"bad.sce", "camera"});
 }
 
 TEST(SceneParser, RejectsBinaryGarbage) {

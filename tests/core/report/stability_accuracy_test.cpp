@@ -26,15 +26,16 @@ constexpr double kMaxK = 4.0;
 
 TEST(StabilityAccuracy, ErrorsWithinConditionBound) {
   for (const TriangleKernel& k : allTriangleKernels()) {
-    for (IllConditioned f : {IllConditioned::Grazing, IllConditioned::Sliver,
-                             IllConditioned::Huge, IllConditioned::Tiny}) {
+    for (IllConditioned f : {IllConditioned::Grazing, IllConditioned::Sliver, IllConditioned::Huge,
+                             IllConditioned::Tiny}) {
       const AccuracyResult a = measureAccuracy(f, k, kSamples, 7);
       const std::string label =
           std::string(toString(k.test)) + " " + toString(k.precision) + " " + toString(f);
-      std::printf("[ figures  ] %-26s wrong hit/miss %4zu/%zu  max t err %.2e  max bary err "
-                  "%.2e  K_t %.2f  K_bary %.2f\n",
-                  label.c_str(), a.wrongDecisions, a.cases, a.maxTError, a.maxBaryError,
-                  a.maxTErrorOverBound, a.maxBaryErrorOverBound);
+      std::printf(
+          "[ figures  ] %-26s wrong hit/miss %4zu/%zu  max t err %.2e  max bary err "
+          "%.2e  K_t %.2f  K_bary %.2f\n",
+          label.c_str(), a.wrongDecisions, a.cases, a.maxTError, a.maxBaryError,
+          a.maxTErrorOverBound, a.maxBaryErrorOverBound);
       EXPECT_LE(a.maxTErrorOverBound, kMaxK) << label;
       EXPECT_LE(a.maxBaryErrorOverBound, kMaxK) << label;
       if (k.precision == Precision::Double) {

@@ -69,7 +69,8 @@ TEST(StabilityBox, ObliqueRaysFromABoxPlane) {
   double t0, t1;
   // From a face, outward and inward: the closed box contains the origin.
   for (const Vec3& d : {Vec3(-0.6, 0.8, 0.0), Vec3(0.6, 0.8, 0.0)}) {
-    EXPECT_TRUE(intersectSlabs(box, RayInverse(Ray{Vec3(0.0, 0.5, 0.5), d}), 0.0, kInfinity, t0, t1));
+    EXPECT_TRUE(
+        intersectSlabs(box, RayInverse(Ray{Vec3(0.0, 0.5, 0.5), d}), 0.0, kInfinity, t0, t1));
     EXPECT_EQ(t0, 0.0);
   }
   // Through a flat box obliquely, from either side: met at one point.
@@ -82,9 +83,9 @@ TEST(StabilityBox, ObliqueRaysFromABoxPlane) {
   // In the flat box's plane, moving within it: met; just off it: missed.
   EXPECT_TRUE(intersectSlabs(flat, RayInverse(Ray{Vec3(-1, 0.5, 0.5), Vec3(1, 0, 0)}), 0.0,
                              kInfinity, t0, t1));
-  EXPECT_FALSE(intersectSlabs(flat, RayInverse(Ray{Vec3(-1, std::nextafter(0.5, 1.0), 0.5),
-                                                   Vec3(1, 0, 0)}),
-                              0.0, kInfinity, t0, t1));
+  EXPECT_FALSE(
+      intersectSlabs(flat, RayInverse(Ray{Vec3(-1, std::nextafter(0.5, 1.0), 0.5), Vec3(1, 0, 0)}),
+                     0.0, kInfinity, t0, t1));
 }
 
 // A flat grid mesh in the plane y = 0 (a zero-thickness bounding box), hit by
@@ -110,10 +111,10 @@ TEST(StabilityBox, SceneLevelAgreesWithBruteForce) {
   for (int i = -1; i <= 2 * n + 1; ++i)
     for (int j = -1; j <= 2 * n + 1; ++j) {
       const double x = double(i) / (2 * n), z = double(j) / (2 * n);
-      rays.push_back({Vec3(x, 1.0, z), Vec3(0, -1, 0)});               // down onto the grid
-      rays.push_back({Vec3(x, -1.0, z), Vec3(0, 1, 0)});               // up from below
+      rays.push_back({Vec3(x, 1.0, z), Vec3(0, -1, 0)});                     // down onto the grid
+      rays.push_back({Vec3(x, -1.0, z), Vec3(0, 1, 0)});                     // up from below
       rays.push_back({Vec3(x, 0.0, z), glm::normalize(Vec3(0.3, 1, 0.1))});  // from the plane
-      rays.push_back({Vec3(x, 0.0, z), Vec3(1, 0, 0)});                // within the plane
+      rays.push_back({Vec3(x, 0.0, z), Vec3(1, 0, 0)});                      // within the plane
     }
   Counters counters;
   const SceneIntersector brute(scene, {.accel = AccelMethod::None});

@@ -42,7 +42,7 @@ MeshData withDegenerates() {
     // A zero-length edge: a second vertex at a's position.
     m.triangles.push_back({t[0], add(a), t[1]});
   }
-  add(Vec3(0.25, 0.25, 0.25));  // isolated, inside
+  add(Vec3(0.25, 0.25, 0.25));   // isolated, inside
   add(Vec3(40.0, -30.0, 20.0));  // isolated, far outside
   return m;
 }
@@ -111,7 +111,8 @@ TEST(StabilityDegenerate, KernelsNeverHitZeroAreaTriangles) {
         for (std::size_t i = 0; i < m.triangles.size(); ++i) {
           const TriangleIndices& t = m.triangles[i];
           TriangleHit h{};
-          if (!ray.intersect(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], 0.0, kInfinity, h))
+          if (!ray.intersect(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], 0.0, kInfinity,
+                             h))
             continue;
           nan += !(std::isfinite(h.t) && std::isfinite(h.beta) && std::isfinite(h.gamma));
           // Triangles past the clean ones, except the duplicates, are degenerate.

@@ -24,7 +24,8 @@ SelfHitResult selfHitsOverScales(ObjectKind kind, TriangleKernel kernel) {
   std::uint64_t seed = 1;
   for (double scale : kScales)
     for (double offset : kOffsets) {
-      const SelfHitResult r = measureSelfIntersection(kind, kernel, scale, offset, kSamples, seed++);
+      const SelfHitResult r =
+          measureSelfIntersection(kind, kernel, scale, offset, kSamples, seed++);
       total.primaryHits += r.primaryHits;
       total.spawned += r.spawned;
       total.reHits += r.reHits;
@@ -49,7 +50,8 @@ TEST(StabilityScale, SpawnedRaysNeverReHitShapes) {
 TEST(StabilityScale, SpawnedRaysNeverReHitTriangles) {
   for (const TriangleKernel& k : allTriangleKernels()) {
     const SelfHitResult r = selfHitsOverScales(ObjectKind::Mesh, k);
-    const std::string label = std::string("triangle ") + toString(k.test) + " " + toString(k.precision);
+    const std::string label =
+        std::string("triangle ") + toString(k.test) + " " + toString(k.precision);
     print(label.c_str(), r);
     // Every double kernel finds every primary hit; in single precision a
     // triangle of size 1e-4 at 1e6 is below float resolution and vanishes.
@@ -72,7 +74,8 @@ Scene testScene(double scale, double offset) {
   const auto map = [&](const Vec3& p) { return scale * p + Vec3(offset); };
   Scene s;
   s.file = "invariance.sce";
-  s.camera = Camera(CameraSpec{map({0.3, 1.6, 5.0}), map({0.0, 0.5, 0.0}), {0, 1, 0}, 45.0, 96, 72});
+  s.camera =
+      Camera(CameraSpec{map({0.3, 1.6, 5.0}), map({0.0, 0.5, 0.0}), {0, 1, 0}, 45.0, 96, 72});
   s.depth = 2;
   s.background = Color(0.1, 0.1, 0.3);
   s.ambience = Color(0.2);

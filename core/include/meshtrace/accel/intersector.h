@@ -41,7 +41,7 @@ class SceneIntersector {
   // (SurfacePoint::primitive): a triangle there is not tested (spawn.h).
   bool closestHit(const Ray& ray, double tMin, Hit& hit, Counters& counters,
                   const PrimitiveRef* start = nullptr) const;
-  // closestHit for the kPacketSize rays (scene_bvh.h) named in `active`
+  // closestHit for the kPacketSize rays named in `active`
   // (bit r: rays[r], leaving start[r] when `start` is given), answered
   // exactly as separate calls would be; with --accel bvh, rays that share an
   // octant of directions, such as the primary rays of a 2x2 pixel quad or

@@ -51,12 +51,12 @@ class TriangleRay {
   bool intersect(const Vec3& a, const Vec3& b, const Vec3& c, double tMin, double tMax,
                  TriangleHit& out) const;
 
-  // Per-ray constants of one precision (filled in triangle_kernels.cpp).
+  // Per-ray constants of one precision (filled in triangle.cpp).
   template <typename Real>
   struct Setup {
     glm::vec<3, Real> origin, direction;
-    int kx, ky, kz;    // watertight: axis permutation, kz the largest |d|
-    Real sx, sy, sz;   // watertight: shear constants
+    int kx, ky, kz;   // watertight: axis permutation, kz the largest |d|
+    Real sx, sy, sz;  // watertight: shear constants
   };
 
  private:
@@ -66,8 +66,8 @@ class TriangleRay {
 };
 
 // One-off test with the default kernel (prefer TriangleRay in loops).
-bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& ray,
-                       double tMin, double tMax, TriangleHit& out);
+bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& ray, double tMin,
+                       double tMax, TriangleHit& out);
 
 // normalize((B - A) x (C - A)), or the zero vector for a degenerate triangle
 // (so a zero-area triangle contributes nothing to vertex normals, and never a NaN).

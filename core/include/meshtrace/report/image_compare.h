@@ -5,9 +5,9 @@
 namespace meshtrace {
 
 struct ImageDifference {
-  double rmse = 0.0;             // over all channels, 8-bit units
-  double psnr = 0.0;             // dB; infinite for identical images
-  double fractionOver32 = 0.0;   // share of pixels with any channel off by more than 32
+  double rmse = 0.0;            // over all channels, 8-bit units
+  double psnr = 0.0;            // dB; infinite for identical images
+  double fractionOver32 = 0.0;  // share of pixels with any channel off by more than 32
   int maxDifference = 0;
 };
 

@@ -32,8 +32,8 @@ struct ReportRow {
 
 struct SceneReport {
   std::filesystem::path scene;
-  std::string reference;        // what the errors are measured against
-  double jpegNoiseRmse = 0.0;   // "within JPEG noise" threshold
+  std::string reference;       // what the errors are measured against
+  double jpegNoiseRmse = 0.0;  // "within JPEG noise" threshold
   std::vector<ReportRow> rows;
   std::vector<std::string> leftOut;
 };
@@ -59,9 +59,5 @@ SceneReport measureScene(const Scene& scene, int threads = 0);
 // is the markdown table of stability.h, included verbatim.
 void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
                  const std::string& stability);
-
-// A log-log scatter plot of RMSE (+ 0.01) against seconds, one colour per
-// configuration group, with decade ticks labelled by a built-in digit font.
-Image plotErrorAgainstTime(const SceneReport& report, int width = 640, int height = 420);
 
 }  // namespace meshtrace

@@ -47,8 +47,8 @@ enum class IllConditioned { Grazing, Sliver, Huge, Tiny };
 const char* toString(IllConditioned family);
 struct AccuracyResult {
   std::size_t cases = 0, wrongDecisions = 0;  // hit/miss differs from the reference
-  double maxTError = 0.0;     // max |t - t_ref| / t_ref
-  double maxBaryError = 0.0;  // max |beta - beta_ref|, |gamma - gamma_ref|
+  double maxTError = 0.0;                     // max |t - t_ref| / t_ref
+  double maxBaryError = 0.0;                  // max |beta - beta_ref|, |gamma - gamma_ref|
   // The same errors divided by their first-order bounds u*kappa*(2 + L/t) and
   // u*kappa, kappa = L^2 / |(e1 x e2) . d| the condition number of the system
   // and L the longest of the edges and o - A: the constant K the bound needs.
@@ -61,9 +61,9 @@ AccuracyResult measureAccuracy(IllConditioned family, TriangleKernel kernel, int
 // The table for the report: one row per algorithm and precision.
 struct StabilityRow {
   TriangleKernel kernel;
-  WatertightResult watertight;      // n = 16 box, off-centre eye
-  SelfHitResult selfHits;           // triangles, all scales and offsets
-  AccuracyResult accuracy;          // all four families together
+  WatertightResult watertight;  // n = 16 box, off-centre eye
+  SelfHitResult selfHits;       // triangles, all scales and offsets
+  AccuracyResult accuracy;      // all four families together
 };
 std::vector<StabilityRow> measureStabilityTable(int samplesPerCase);
 std::string stabilityMarkdown(const std::vector<StabilityRow>& rows);
