@@ -9,6 +9,7 @@
 
 #include "meshtrace/io/image.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/output_file.h"
 #include "meshtrace/io/scene_parser.h"
 
 namespace meshtrace::app {
@@ -16,6 +17,20 @@ namespace meshtrace::app {
 bool imageDestinationUsable(const std::filesystem::path& path) {
   try {
     checkImageDestination(path);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return false;
+  }
+  return true;
+}
+
+bool reportDestinationUsable(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  try {
+    if (ec)
+      throw std::runtime_error(dir.string() + ": cannot create the folder (" + ec.message() + ")");
+    checkOutputDestination(dir / "report.md");
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return false;

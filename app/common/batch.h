@@ -35,6 +35,10 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
 // that neither is spent on an output that cannot be written.
 bool imageDestinationUsable(const std::filesystem::path& path);
 
+// Whether `raytrace --report` could write into `dir` (created if missing);
+// prints the error if not, before the measurements.
+bool reportDestinationUsable(const std::filesystem::path& dir);
+
 // Milliseconds since `start`, for timing lines.
 double millisecondsSince(std::chrono::steady_clock::time_point start);
 

@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "error: --report DIR needs at least one SCENE.sce\n");
       return 2;
     }
+    if (!app::reportDestinationUsable(reportDir)) return 1;
     std::vector<SceneReport> reports;
     for (const std::string& file : args) {
       const auto scene = app::loadAndDescribe(file);

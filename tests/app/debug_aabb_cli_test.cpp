@@ -4,6 +4,7 @@
 #include "meshtrace/io/image.h"
 #include "support/cli.h"
 #include "support/files.h"
+#include "support/mounts.h"
 #include "support/paths.h"
 #include "support/scene_snippets.h"
 
@@ -58,6 +59,24 @@ TEST(DebugAabbCli, RefusesAnUnwritableOutputLeavingTheOldFile) {
                       {"out.tga"}, dir / "out.tga");
   test::expectRefusal(debugAabbTool(), {scene.string(), (dir / "nowhere" / "out.png").string()},
                       dir, {"out.png"}, dir / "nowhere" / "out.png");
+}
+
+// As root too: the folder is a read-only mount.
+TEST(DebugAabbCli, AllIntoAReadOnlyFolderWritesNothingAndFails) {
+  const auto dir = test::scratchDir();
+  std::filesystem::create_directories(dir / "scenes");
+  std::filesystem::create_directories(dir / "results");
+  sceneWithMeshes(dir / "scenes", "mesh tri.off FLAT " + test::kMaterial + "\n");
+  test::writeFile(dir / "results" / "debug_aabb_scene.png", test::kOldOutput);
+  std::string refused;
+  const auto r = test::runToolWithMounts(
+      debugAabbTool(), {"--all", (dir / "scenes").string(), (dir / "results").string()}, dir,
+      test::readOnlyFolder(dir / "results"), refused);
+  MESHTRACE_SKIP_IF_MOUNTS_REFUSED(r, refused);
+  EXPECT_TRUE(r->exited && r->exitCode == 1) << test::describe(*r);
+  test::expectMentions(r->err, {"error", "debug_aabb_scene.png", "read-only"});
+  EXPECT_EQ(test::readFileBytes(dir / "results" / "debug_aabb_scene.png"), test::kOldOutput);
+  EXPECT_EQ(test::listFolder(dir / "results"), std::vector<std::string>{"debug_aabb_scene.png"});
 }
 
 TEST(DebugAabbCli, AllSkipsScenesWithoutMeshesAndNamesBadOnes) {

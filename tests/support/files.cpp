@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <system_error>
 
 namespace meshtrace::test {
 
@@ -16,7 +17,8 @@ std::filesystem::path writeFile(const std::filesystem::path& path, std::string_v
 }
 
 std::string readFileBytes(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path)) return "";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "";
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }

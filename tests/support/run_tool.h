@@ -1,6 +1,8 @@
 #pragma once
 // Runs a built command-line tool as a separate process, as a user would, and
 // reports how it ended and what it printed.
+#include <sys/resource.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,15 +14,32 @@ struct ToolResult {
   int exitCode = -1;    // valid when `exited`
   int signal = 0;       // the signal that ended it, if any
   bool timedOut = false;
-  std::string out, err;  // stdout and stderr
+  bool signalSent = false;  // ToolRun::signalOnTemporary was sent
+  std::string out, err;     // stdout and stderr
   double seconds = 0.0;
 };
 
+// How a tool runs, besides its arguments. The child starts with every
+// signal at its default action and none blocked, whatever the test process
+// does with them.
+struct ToolRun {
+  double timeoutSeconds = 60.0;         // then the tool is killed and reported as timed out
+  rlim_t addressSpace = RLIM_INFINITY;  // RLIMIT_AS of the child, bytes
+  rlim_t fileSize = RLIM_INFINITY;      // RLIMIT_FSIZE of the child, bytes
+  // If not 0: sent to the tool the moment a file whose name ends in ".tmp"
+  // is created in `watch` (an output's temporary, while it is written).
+  int signalOnTemporary = 0;
+  std::filesystem::path watch;
+};
+
 // Runs `tool args...`, with stdout and stderr captured through files in
-// `workDir` (which must exist). A tool still running after `timeoutSeconds`
-// is killed and reported as timed out.
+// `workDir` (which must exist).
 ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::string>& args,
-                   const std::filesystem::path& workDir, double timeoutSeconds = 60.0);
+                   const std::filesystem::path& workDir, const ToolRun& run);
+inline ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::string>& args,
+                          const std::filesystem::path& workDir, double timeoutSeconds = 60.0) {
+  return runTool(tool, args, workDir, ToolRun{.timeoutSeconds = timeoutSeconds});
+}
 
 // Prints a ToolResult in failure messages.
 std::string describe(const ToolResult& r);

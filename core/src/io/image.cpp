@@ -2,16 +2,16 @@
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 
 #include "io/jpeg.h"
 #include "io/png_encoder.h"
+#include "meshtrace/io/output_file.h"
 
 namespace meshtrace {
 
@@ -85,15 +85,6 @@ std::vector<std::uint8_t> encode(const Image8& image, const std::string& ext,
   }
 }
 
-// True only if every byte reached the file and it closed cleanly.
-bool writeBytes(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  return !out.fail();
-}
-
 std::vector<std::uint8_t> readBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot open image for reading");
@@ -101,42 +92,23 @@ std::vector<std::uint8_t> readBytes(const std::filesystem::path& path) {
 }
 }  // namespace
 
+void writeImage(const Image8& image, OutputFile& out) {
+  const std::vector<std::uint8_t> bytes = encode(image, lowerExtension(out.target()), out.target());
+  out.write(bytes.data(), bytes.size());
+}
+
 void writeImage(const Image8& image, const std::filesystem::path& path) {
+  // Encoded before the temporary file exists: a codec's error leaves nothing.
   const std::vector<std::uint8_t> bytes = encode(image, lowerExtension(path), path);
-  // The temporary file sits beside the target so the rename stays on one
-  // file system and is atomic.
-  std::filesystem::path tmp = path;
-  tmp += ".tmp" + std::to_string(::getpid());
-  std::error_code ec;
-  if (!writeBytes(bytes, tmp)) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(path.string() + ": cannot write the image file");
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    const std::string reason = ec.message();
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(path.string() + ": cannot write the image file (" + reason + ")");
-  }
+  OutputFile out(path);
+  out.write(bytes.data(), bytes.size());
+  out.commit();
 }
 
 void checkImageDestination(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
   if (!knownType(ext)) throwUnknownType(path, ext);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw std::runtime_error(path.string() + ": is a folder, not an image file");
-  const std::filesystem::path folder =
-      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::exists(folder, ec))
-    throw std::runtime_error(path.string() + ": cannot write the image file (no folder " +
-                             folder.string() + ")");
-  if (!std::filesystem::is_directory(folder, ec))
-    throw std::runtime_error(path.string() + ": cannot write the image file (" + folder.string() +
-                             " is not a folder)");
-  if (::access(folder.c_str(), W_OK) != 0)
-    throw std::runtime_error(path.string() + ": cannot write the image file (folder " +
-                             folder.string() + " is not writable)");
+  checkOutputDestination(path);
 }
 
 Image8 readImage(const std::filesystem::path& path) {

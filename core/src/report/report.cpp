@@ -3,9 +3,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
+#include <system_error>
 
+#include "meshtrace/io/output_file.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/progressive.h"
 #include "meshtrace/render/surface.h"
@@ -201,10 +203,15 @@ SceneReport measureScene(const Scene& scene, int threads) {
 
 void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
                  const std::string& stability) {
-  std::filesystem::create_directories(dir);
-  std::ofstream csv(dir / "report.csv");
-  std::ofstream md(dir / "report.md");
-  if (!csv || !md) throw std::runtime_error("cannot write the report into " + dir.string());
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw std::runtime_error(dir.string() + ": cannot create the report folder (" + ec.message() +
+                             ")");
+  // Every file goes to a temporary first; none replaces an earlier report's
+  // until all are written (the plots first, report.md last).
+  std::vector<OutputFile> files;
+  std::ostringstream csv, md;
   csv << "scene,group,config,accel,triangle,precision,step,samples,seconds,rmse,psnr,"
          "hit_differs,max_normal_deg,reference\n";
   md << "# Error against run time\n\n"
@@ -255,7 +262,9 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
       for (const std::string& l : s.leftOut) md << "- " << l << "\n";
       md << "\n";
     }
-    writeImage(quantize(plotErrorAgainstTime(s)), dir / ("plot_" + name + ".png"));
+    files.emplace_back(dir / ("plot_" + name + ".png"));
+    writeImage(quantize(plotErrorAgainstTime(s)), files.back());
+    files.back().finish();  // closed now: a report of many scenes holds no descriptors open
   }
   md << "## Stability suite\n\n"
      << "Per triangle test and precision (tests/core/stability_*_test.cpp): leaks = rays from "
@@ -266,6 +275,9 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
         "quad-precision reference on grazing, sliver, huge and tiny triangles. Mrays/s is the "
         "brute-force box test on one core.\n\n"
      << stability << "\n";
+  files.emplace_back(dir / "report.csv").write(csv.str());
+  files.emplace_back(dir / "report.md").write(md.str());
+  commitTogether(files);
 }
 
 }  // namespace meshtrace

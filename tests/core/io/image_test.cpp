@@ -3,14 +3,13 @@
 #include "meshtrace/io/image.h"
 
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
 
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
 #include "meshtrace/report/image_compare.h"
+#include "support/file_size_limit.h"
 #include "support/files.h"
 #include "support/paths.h"
 
@@ -183,28 +182,6 @@ TEST(WriteImage, FailsBelowARegularFile) {
   test::expectMentions(writeErrorOf(testPattern(), dir / "file" / "out.ppm"), {"out.ppm"});
 }
 
-// Restores the process's file size limit when the test ends, however it ends.
-class FileSizeLimit {
- public:
-  explicit FileSizeLimit(rlim_t bytes) {
-    getrlimit(RLIMIT_FSIZE, &saved_);
-    previousHandler_ = signal(SIGXFSZ, SIG_IGN);  // make oversized writes fail with EFBIG
-    rlimit limit = saved_;
-    limit.rlim_cur = bytes;
-    ok_ = setrlimit(RLIMIT_FSIZE, &limit) == 0;
-  }
-  ~FileSizeLimit() {
-    setrlimit(RLIMIT_FSIZE, &saved_);
-    signal(SIGXFSZ, previousHandler_);
-  }
-  bool ok() const { return ok_; }
-
- private:
-  rlimit saved_{};
-  sighandler_t previousHandler_;
-  bool ok_ = false;
-};
-
 // A write that fails half way (here: the file size limit is reached) must
 // leave the previous file as it was and no partial file behind.
 TEST(WriteImage, AFailureHalfWayLeavesTheOldFileUntouched) {
@@ -218,7 +195,7 @@ TEST(WriteImage, AFailureHalfWayLeavesTheOldFileUntouched) {
   std::mt19937 random(7);
   for (std::uint8_t& byte : big.rgb) byte = static_cast<std::uint8_t>(random() >> 24);
   {
-    FileSizeLimit limit(1000);
+    test::FileSizeLimit limit(1000);
     ASSERT_TRUE(limit.ok());
     for (const char* name : {"out.ppm", "out.bmp", "out.png"}) {
       EXPECT_THROW(writeImage(big, dir / name), std::runtime_error) << name;

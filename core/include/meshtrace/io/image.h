@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "meshtrace/io/output_file.h"
 #include "meshtrace/util/math.h"
 
 namespace meshtrace {
@@ -44,14 +45,17 @@ struct Image8 {
 std::uint8_t toByte(double c);
 Image8 quantize(const Image& image);
 
-// Writes PNG, BMP, PPM or JPEG (by extension) to a temporary file beside
-// `path` and renames it into place, so a failure leaves any existing file
-// untouched. Throws std::runtime_error naming the path on failure.
+// Writes PNG, BMP, PPM or JPEG (by extension) through an OutputFile
+// (output_file.h): a failure leaves any existing file untouched. Throws
+// std::runtime_error naming the path on failure.
 void writeImage(const Image8& image, const std::filesystem::path& path);
+// The same into `out`, of the type its target's extension names, without
+// committing it: for files that replace their targets together.
+void writeImage(const Image8& image, OutputFile& out);
 // Throws std::runtime_error naming the path if writeImage could not write
 // there for a reason known before any image exists: an unknown image type,
-// a folder in the way, or a missing or read-only parent folder. Lets a long
-// render be refused before it starts rather than after.
+// or what checkOutputDestination finds. Lets a long render be refused
+// before it starts rather than after.
 void checkImageDestination(const std::filesystem::path& path);
 // Throws std::runtime_error naming the path if it cannot be read.
 Image8 readImage(const std::filesystem::path& path);
