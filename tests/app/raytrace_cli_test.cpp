@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <fstream>
+
 #include "meshtrace/io/image.h"
 #include "support/cli.h"
 #include "support/files.h"
@@ -165,7 +167,8 @@ TEST(RaytraceCli, AFullDiskLeavesTheOldOutputAndNoTemporary) {
 // would kill a tool that did not handle it.
 TEST(RaytraceCli, AFileSizeLimitLeavesTheOldOutputAndNoTemporary) {
   const auto dir = folderWithGoodScene();
-  test::writeFile(dir / "good.sce", "camera 0 0 5  0 0 0  0 1 0  45  200 150\n" + test::kSphereLine);
+  test::writeFile(dir / "good.sce",
+                  "camera 0 0 5  0 0 0  0 1 0  45  200 150\n" + test::kSphereLine);
   test::writeFile(dir / "out.ppm", test::kOldOutput);
   // Room for what the tool prints (the limit holds for its stdout and
   // stderr files too), not for the 90 kB image.
@@ -284,6 +287,43 @@ TEST(RaytraceCli, ReportRefusesAReadOnlyFolderBeforeMeasuring) {
   test::expectMentions(r->err, {"error", "report", "read-only"});
   EXPECT_EQ(r->out.find("measured"), std::string::npos) << test::describe(*r);
   EXPECT_TRUE(test::listFolder(dir / "report").empty());
+}
+
+// Files are checked as they stream: the tool finds the mistake on line 2
+// of a 250 MB scene within an address space of 64 MB (which the tiny
+// scene's whole run fits in), where reading the file first took 3.3 GB.
+TEST(RaytraceCli, FindsAMistakeEarlyInAHugeSceneInLittleMemory) {
+  const auto dir = folderWithGoodScene();
+  constexpr rlim_t kAddressSpace = rlim_t{64} << 20;
+  test::expectSuccess(raytraceTool(), renderArgs(dir, "out.png"), dir);
+  const auto fits = test::runTool(raytraceTool(), renderArgs(dir, "out.png"), dir,
+                                  {.addressSpace = kAddressSpace});
+  ASSERT_TRUE(fits.exited && fits.exitCode == 0)
+      << "the tiny scene must fit: " << test::describe(fits);
+
+  const auto huge = test::writeFile(dir / "huge.sce", test::kCameraLine + "bogus 1 2 3\n");
+  std::filesystem::resize_file(huge, 250'000'000);  // the rest never gets read
+  const auto r = test::runTool(raytraceTool(), {huge.string(), (dir / "out.png").string()}, dir,
+                               {.addressSpace = kAddressSpace});
+  std::filesystem::remove(huge);
+  EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+  test::expectMentions(r.err, {"huge.sce:2", "unknown keyword 'bogus'"});
+}
+
+// A line of 100 MB (a comment) costs no more memory than a short one.
+TEST(RaytraceCli, ReadsPastAHundredMegabyteLineInLittleMemory) {
+  const auto dir = folderWithGoodScene();
+  const auto file = dir / "long.sce";
+  {
+    std::ofstream out(file, std::ios::binary);
+    out << test::kCameraLine << "# " << std::string(100'000'000, 'x') << "\nbogus\n";
+    ASSERT_TRUE(out.flush());
+  }
+  const auto r = test::runTool(raytraceTool(), {file.string(), (dir / "out.png").string()}, dir,
+                               {.addressSpace = rlim_t{64} << 20});
+  std::filesystem::remove(file);
+  EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+  test::expectMentions(r.err, {"long.sce:3", "unknown keyword 'bogus'"});
 }
 
 TEST(RaytraceCli, AllRendersTheGoodScenesAndNamesTheBadOnes) {

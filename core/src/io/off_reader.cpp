@@ -1,12 +1,18 @@
 #include "meshtrace/io/off_reader.h"
 
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
+#include <atomic>
 #include <cmath>
 #include <exception>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
+#include "io/file_source.h"
+#include "io/line_pieces.h"
 #include "io/text.h"
 #include "meshtrace/io/input_error.h"
 
@@ -21,129 +27,94 @@ constexpr std::uintmax_t kMaxOffBytes = std::uintmax_t{4} << 30;
 constexpr std::uintmax_t kMinVertexBytes = 6;
 constexpr std::uintmax_t kMinFaceBytes = 8;
 
-// The body (the vertex and face lines after the header) is parsed in
-// chunks of whole lines, in parallel: a first pass counts each chunk's lines
-// and non-empty lines, which tells every chunk the line number and the
-// element (vertex or face) its first line has; a second pass parses. A
-// chunk stops at its first bad line, and the error of the earliest bad line
-// in the file is the one reported, as a serial reader would report it.
-constexpr std::size_t kChunkBytes = std::size_t{1} << 18;
+// The body (the vertex and face lines after the header) streams through a
+// pipeline in pieces of whole lines, several pieces in flight: read in
+// order; counted in parallel (lines and non-empty lines); numbered in order
+// (the line number and the element, vertex or face, each piece's first line
+// has); parsed in parallel; and gathered in order, where the first bad line
+// of the file is the error reported, as a serial reader would report it,
+// and reading stops. Only the pieces in flight are in memory, never the
+// whole file.
+constexpr std::size_t kPieceBytes = std::size_t{1} << 18;
 
 class OffParser {
  public:
-  OffParser(std::string_view text, const std::filesystem::path& file) : file_(file), text_(text) {}
+  OffParser(text::FileSource& source) : file_(source.file()), source_(source) {}
 
   MeshData parse() {
-    text::LineReader header(text_);
+    text::LinePieces pieces(source_, kPieceBytes);
+    auto first = std::make_unique<Chunk>();
+    if (!pieces.next(first->piece) && !first->piece.nulAfter())
+      throw InputError::inFile(file_, "empty file: no OFF header");
     std::int64_t counts[3] = {0, 0, 0};
-    readHeader(header, counts);
+    std::size_t headerLines = readHeader(pieces, *first, counts);
     nv_ = counts[0];
     nf_ = counts[1];
     // Divide rather than multiply: counts near 2^63 would wrap the product
     // around to a small number and pass.
     const auto vertexCount = static_cast<std::uintmax_t>(nv_);
     const auto faceCount = static_cast<std::uintmax_t>(nf_);
-    const std::uintmax_t size = text_.size();
+    const std::uintmax_t size = source_.size();
     if (vertexCount > size / kMinVertexBytes || faceCount > size / kMinFaceBytes ||
         vertexCount * kMinVertexBytes + faceCount * kMinFaceBytes > size) {
-      throw InputError::atLine(file_, header.lineNumber(),
+      throw InputError::atLine(file_, headerLines,
                                "header announces " + std::to_string(nv_) + " vertices and " +
                                    std::to_string(nf_) + " faces, more than a " +
                                    std::to_string(size) + "-byte file can hold");
     }
-    MeshData mesh;
-    mesh.vertices.resize(static_cast<std::size_t>(nv_));
-    std::vector<Chunk> chunks = split(text_.substr(header.offset()));
-    tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) { count(chunks[c]); });
-    std::int64_t elements = 0;
-    std::size_t lineBefore = header.lineNumber();
-    for (Chunk& c : chunks) {
-      c.firstElement = elements;
-      elements += c.elements;
-      c.lineBefore = lineBefore;
-      lineBefore += c.lines;
-    }
-    tbb::parallel_for(std::size_t(0), chunks.size(),
-                      [&](std::size_t c) { parseChunk(chunks[c], mesh.vertices); });
-    for (const Chunk& c : chunks)
-      if (c.error) std::rethrow_exception(c.error);
-    if (elements < nv_ + nf_) {
-      const bool vertex = elements < nv_;
+    mesh_.vertices.resize(static_cast<std::size_t>(nv_));
+    mesh_.triangles.reserve(static_cast<std::size_t>(nf_));  // exact for a triangle mesh
+    readBody(pieces, std::move(first), headerLines);
+    if (error_) std::rethrow_exception(error_);
+    if (elements_ < nv_ + nf_) {
+      const bool vertex = elements_ < nv_;
       throw InputError::inFile(file_, "file ends at " + std::string(vertex ? "vertex " : "face ") +
-                                          std::to_string(vertex ? elements : elements - nv_) +
+                                          std::to_string(vertex ? elements_ : elements_ - nv_) +
                                           " of " + std::to_string(vertex ? nv_ : nf_) +
                                           " announced in the header");
     }
-    std::size_t triangles = 0;
-    for (const Chunk& c : chunks) triangles += c.triangles.size();
-    mesh.triangles.reserve(triangles);
-    for (const Chunk& c : chunks)
-      mesh.triangles.insert(mesh.triangles.end(), c.triangles.begin(), c.triangles.end());
-    return mesh;
+    return std::move(mesh_);
   }
 
  private:
   struct Chunk {
-    std::string_view text;       // whole lines
+    text::LinePiece piece;
+    std::size_t begin = 0;       // where its lines start in the piece
+    bool loneCr = false;         // text::hasLoneCr of its lines
     std::size_t lines = 0;       // all its lines
     std::int64_t elements = 0;   // its non-empty lines
     std::size_t lineBefore = 0;  // the number of the line before its first
     std::int64_t firstElement = 0;
     std::vector<TriangleIndices> triangles;
     std::exception_ptr error;
+
+    std::string_view text() const { return piece.text().substr(begin); }
   };
 
-  // Pieces of about kChunkBytes, each ending after a line break (or at the
-  // end of the text).
-  static std::vector<Chunk> split(std::string_view body) {
-    std::vector<Chunk> chunks;
-    std::size_t begin = 0;
-    while (begin < body.size()) {
-      std::size_t end = begin + kChunkBytes;
-      if (end >= body.size()) {
-        end = body.size();
-      } else {
-        end = body.find('\n', end);
-        end = end == std::string_view::npos ? body.size() : end + 1;
+  InputError nulError(std::size_t line) const {
+    return InputError::atLine(file_, line, text::kNulByteMessage);
+  }
+
+  // Reads the header from the first pieces (usually all of it is in the
+  // first); `chunk` is left holding the piece where the body starts, at
+  // its start. Returns the number of the header's last line.
+  std::size_t readHeader(text::LinePieces& pieces, Chunk& chunk, std::int64_t counts[3]) {
+    std::size_t lineBefore = 0;
+    text::LineReader lines(chunk.piece.text());
+    const auto nextLine = [&](std::string_view& line) {
+      while (!lines.nextNonEmpty(line)) {
+        lineBefore += lines.lineNumber();
+        if (chunk.piece.nulAfter()) throw nulError(lineBefore + 1);
+        if (!pieces.next(chunk.piece) && !chunk.piece.nulAfter()) return false;
+        lines = text::LineReader(chunk.piece.text());
       }
-      Chunk c;
-      c.text = body.substr(begin, end - begin);
-      chunks.push_back(std::move(c));
-      begin = end;
-    }
-    return chunks;
-  }
-
-  static void count(Chunk& c) {
-    text::LineReader lines(c.text);
-    std::string_view line;
-    while (lines.nextNonEmpty(line)) ++c.elements;
-    c.lines = lines.lineNumber();
-  }
-
-  void parseChunk(Chunk& c, std::vector<Vec3>& vertices) const {
-    text::LineReader lines(c.text);
-    std::string_view line;
-    for (std::int64_t e = c.firstElement; e < nv_ + nf_ && lines.nextNonEmpty(line); ++e) {
-      try {
-        const std::size_t lineNumber = c.lineBefore + lines.lineNumber();
-        if (e < nv_)
-          vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
-        else
-          readFace(line, e - nv_, lineNumber, c.triangles);
-      } catch (const InputError&) {
-        c.error = std::current_exception();
-        return;
-      }
-    }
-  }
-
-  void readHeader(text::LineReader& lines, std::int64_t counts[3]) const {
-    std::string_view line;
-    if (!lines.nextNonEmpty(line)) throw InputError::inFile(file_, "empty file: no OFF header");
-    const auto fail = [&](const std::string& what) {
-      throw InputError::atLine(file_, lines.lineNumber(), what);
+      return true;
     };
+    const auto fail = [&](const std::string& what) {
+      throw InputError::atLine(file_, lineBefore + lines.lineNumber(), what);
+    };
+    std::string_view line;
+    if (!nextLine(line)) throw InputError::inFile(file_, "empty file: no OFF header");
     text::TokenReader tokens(line);
     std::string_view token;
     tokens.next(token);
@@ -159,9 +130,105 @@ class OffParser {
     int found = 0;
     while (found < 3 && tokens.next(token)) parseCount(token, counts[found++]);
     while (found < 2) {  // counts on the following line
-      if (!lines.nextNonEmpty(line)) fail("file ends before the vertex and face counts");
+      if (!nextLine(line)) fail("file ends before the vertex and face counts");
       text::TokenReader more(line);
       while (found < 3 && more.next(token)) parseCount(token, counts[found++]);
+    }
+    chunk.begin = lines.offset();
+    chunk.lineBefore = lineBefore + lines.lineNumber();
+    return chunk.lineBefore;
+  }
+
+  void readBody(text::LinePieces& pieces, std::unique_ptr<Chunk> first, std::size_t lineBefore) {
+    // Pieces in flight: each holds kPieceBytes, and finished chunks are
+    // reused rather than allocated again.
+    const auto tokens = static_cast<std::size_t>(4 * tbb::this_task_arena::max_concurrency());
+    std::vector<std::unique_ptr<Chunk>> spare;
+    std::mutex spareLock;
+    std::atomic<bool> done = false;  // set by the last stage, read by the first
+    std::int64_t elements = 0;
+    tbb::parallel_pipeline(
+        tokens,
+        tbb::make_filter<
+            void, Chunk*>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& fc) -> Chunk* {
+          if (first) return first.release();
+          if (done) {
+            fc.stop();
+            return nullptr;
+          }
+          std::unique_ptr<Chunk> c;
+          {
+            const std::lock_guard<std::mutex> lock(spareLock);
+            if (!spare.empty()) c = std::move(spare.back()), spare.pop_back();
+          }
+          if (!c) c = std::make_unique<Chunk>();
+          if (!pieces.next(c->piece) && !c->piece.nulAfter()) {
+            fc.stop();
+            return nullptr;
+          }
+          c->begin = 0;
+          return c.release();
+        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::parallel, [](Chunk* c) {
+          count(*c);
+          return c;
+        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::serial_in_order, [&](Chunk* c) {
+          c->firstElement = elements;
+          elements += c->elements;
+          c->lineBefore = lineBefore;
+          lineBefore += c->lines;
+          return c;
+        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::parallel, [&](Chunk* c) {
+          parseChunk(*c);
+          return c;
+        }) & tbb::make_filter<Chunk*, void>(tbb::filter_mode::serial_in_order, [&](Chunk* chunk) {
+          std::unique_ptr<Chunk> c(chunk);
+          gather(*c, done);
+          c->triangles.clear();
+          c->error = nullptr;
+          const std::lock_guard<std::mutex> lock(spareLock);
+          spare.push_back(std::move(c));
+        }));
+  }
+
+  static void count(Chunk& c) {
+    c.loneCr = text::hasLoneCr(c.text());
+    text::LineReader lines(c.text(), c.loneCr);
+    std::string_view line;
+    c.elements = 0;
+    while (lines.nextNonEmpty(line)) ++c.elements;
+    c.lines = lines.lineNumber();
+  }
+
+  // In file order: the first error ends the reading.
+  void gather(Chunk& c, std::atomic<bool>& done) {
+    if (done) return;
+    if (c.error) {
+      error_ = c.error;
+      done = true;
+      return;
+    }
+    elements_ = std::min(c.firstElement + c.elements, nv_ + nf_);
+    mesh_.triangles.insert(mesh_.triangles.end(), c.triangles.begin(), c.triangles.end());
+    if (c.piece.nulAfter()) {
+      error_ = std::make_exception_ptr(nulError(c.lineBefore + c.lines + 1));
+      done = true;
+    }
+  }
+
+  void parseChunk(Chunk& c) {
+    text::LineReader lines(c.text(), c.loneCr);
+    std::string_view line;
+    for (std::int64_t e = c.firstElement; e < nv_ + nf_ && lines.nextNonEmpty(line); ++e) {
+      try {
+        const std::size_t lineNumber = c.lineBefore + lines.lineNumber();
+        if (e < nv_)
+          mesh_.vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
+        else
+          readFace(line, e - nv_, lineNumber, c.triangles);
+      } catch (const InputError&) {
+        c.error = std::current_exception();
+        return;
+      }
     }
   }
 
@@ -209,16 +276,18 @@ class OffParser {
     // Any further values on the line (face colours) are ignored.
   }
 
-  const std::filesystem::path& file_;
-  std::string_view text_;
+  std::filesystem::path file_;
+  text::FileSource& source_;
   std::int64_t nv_ = 0, nf_ = 0;
+  MeshData mesh_;
+  std::int64_t elements_ = 0;  // elements read before the first error
+  std::exception_ptr error_;
 };
 }  // namespace
 
 MeshData readOff(const std::filesystem::path& file) {
-  const text::FileBytes data = text::readFile(file, kMaxOffBytes);
-  text::requireText(data.text(), file);
-  return OffParser(data.text(), file).parse();
+  text::FileSource source(file, kMaxOffBytes);
+  return OffParser(source).parse();
 }
 
 }  // namespace meshtrace

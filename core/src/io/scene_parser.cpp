@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "io/file_source.h"
 #include "io/text.h"
+#include "io/token_stream.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/off_reader.h"
 
@@ -21,11 +23,6 @@ constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 1LL << 25;
 constexpr int kMaxDepth = 1000;
 
-struct Token {
-  std::string_view text;
-  std::size_t line;
-};
-
 // A `mesh` line, read before any mesh file is.
 struct MeshLine {
   std::filesystem::path file;
@@ -36,15 +33,8 @@ struct MeshLine {
 
 class SceneParser {
  public:
-  SceneParser(std::string_view text, const std::filesystem::path& file) : file_(file) {
-    text::LineReader lines(text);
-    std::string_view line;
-    while (lines.nextNonEmpty(line)) {
-      text::TokenReader words(line);
-      std::string_view word;
-      while (words.next(word)) tokens_.push_back({word, lines.lineNumber()});
-    }
-  }
+  SceneParser(text::TokenStream& words, const std::filesystem::path& file)
+      : file_(file), words_(words) {}
 
   Scene parse() {
     Scene scene;
@@ -53,13 +43,14 @@ class SceneParser {
     CameraSpec cameraSpec;
     std::size_t cameraLine = 0;
     std::vector<MeshLine> meshLines;
-    while (pos_ < tokens_.size()) {
-      const Token keyword = tokens_[pos_++];
-      entity_ = keyword;
-      const std::string_view k = keyword.text;
+    text::Word word;
+    while (words_.next(word)) {
+      entity_.assign(word.text);
+      entityLine_ = word.line;
+      const std::string_view k = entity_;
       if (k == "camera") {
         cameraSpec = readCamera();
-        cameraLine = keyword.line;
+        cameraLine = entityLine_;
         haveCamera = true;
       } else if (k == "depth") {
         scene.depth = readInt("depth", 0, kMaxDepth);
@@ -95,9 +86,10 @@ class SceneParser {
       } else if (k == "mesh") {
         meshLines.push_back(readMeshLine());
       } else {
-        failAt(keyword.line, "unknown keyword " + quoted(k));
+        failAt(entityLine_, "unknown keyword " + quoted(k));
       }
     }
+    if (!haveCamera && !words_.sawText()) throw InputError::inFile(file_, "empty scene file");
     if (!haveCamera) throw InputError::inFile(file_, "no 'camera' line: a scene needs a camera");
     scene.camera = Camera(cameraSpec);
     if (scene.camera.upWasReplaced()) {
@@ -114,53 +106,65 @@ class SceneParser {
     throw InputError::atLine(file_, line, what);
   }
 
-  const Token& take(const std::string& what) {
-    if (pos_ >= tokens_.size()) {
-      failAt(entity_.line, "'" + std::string(entity_.text) +
-                               "' is incomplete: the file ends where the " + what + " belongs");
+  // The next word of the current entity.
+  text::Word take(const std::string& what) {
+    text::Word word;
+    if (!words_.next(word)) {
+      failAt(entityLine_, meshtrace::quoted(entity_) + " is incomplete: the file ends where the " +
+                              what + " belongs");
     }
-    return tokens_[pos_++];
+    return word;
   }
 
-  double readNumber(const std::string& what) {
-    const Token& t = take(what);
+  struct Number {
+    double value;
+    std::size_t line;
+  };
+
+  Number readNumber(const std::string& what) {
+    const text::Word w = take(what);
     double v = 0.0;
-    if (!text::parseDouble(t.text, v)) {
-      failAt(t.line, "expected a number for the " + what + " of '" + std::string(entity_.text) +
-                         "' (line " + std::to_string(entity_.line) + "), found " + quoted(t.text));
+    if (!text::parseDouble(w.text, v)) {
+      failAt(w.line, "expected a number for the " + what + " of " + meshtrace::quoted(entity_) +
+                         " (line " + std::to_string(entityLine_) + "), found " + quoted(w.text));
     }
-    if (!std::isfinite(v)) failAt(t.line, "the " + what + " is not finite: " + quoted(t.text));
-    return v;
+    if (!std::isfinite(v)) failAt(w.line, "the " + what + " is not finite: " + quoted(w.text));
+    return {v, w.line};
   }
 
   int readInt(const std::string& what, long long lo, long long hi) {
-    const Token& t = take(what);
+    const text::Word w = take(what);
     std::int64_t v = 0;
-    if (!text::parseInt64(t.text, v))
-      failAt(t.line, "expected a whole number for the " + what + ", found " + quoted(t.text));
+    if (!text::parseInt64(w.text, v))
+      failAt(w.line, "expected a whole number for the " + what + ", found " + quoted(w.text));
     if (v < lo || v > hi) {
-      failAt(t.line, "the " + what + " " + std::to_string(v) + " is outside " + std::to_string(lo) +
+      failAt(w.line, "the " + what + " " + std::to_string(v) + " is outside " + std::to_string(lo) +
                          ".." + std::to_string(hi));
     }
     return static_cast<int>(v);
   }
 
-  Vec3 readVec3(const std::string& what) {
+  // Three numbers, and the line of the first.
+  Vec3 readVec3(const std::string& what, std::size_t* line = nullptr) {
     Vec3 v;
-    for (int k = 0; k < 3; ++k) v[k] = readNumber(what);
+    for (int k = 0; k < 3; ++k) {
+      const Number n = readNumber(what);
+      if (k == 0 && line) *line = n.line;
+      v[k] = n.value;
+    }
     return v;
   }
 
   double readPositive(const std::string& what) {
-    const std::size_t line = pos_ < tokens_.size() ? tokens_[pos_].line : entity_.line;
-    const double v = readNumber(what);
-    if (!(v > 0.0)) failAt(line, "the " + what + " must be positive, got " + std::to_string(v));
-    return v;
+    const Number n = readNumber(what);
+    if (!(n.value > 0.0))
+      failAt(n.line, "the " + what + " must be positive, got " + std::to_string(n.value));
+    return n.value;
   }
 
   Vec3 readDirection(const std::string& what) {
-    const std::size_t line = pos_ < tokens_.size() ? tokens_[pos_].line : entity_.line;
-    const Vec3 v = readVec3(what);
+    std::size_t line = 0;
+    const Vec3 v = readVec3(what, &line);
     const double len = glm::length(v);
     if (!(len > 0.0) || !std::isfinite(len)) failAt(line, "the " + what + " is the zero vector");
     return v / len;
@@ -171,11 +175,12 @@ class SceneParser {
     m.ambient = readVec3("ambient colour");
     m.diffuse = readVec3("diffuse colour");
     m.specular = readVec3("specular colour");
-    m.shininess = readNumber("shininess");
-    const std::size_t line = pos_ < tokens_.size() ? tokens_[pos_].line : entity_.line;
-    m.mirror = readNumber("mirror reflectivity");
+    m.shininess = readNumber("shininess").value;
+    const Number mirror = readNumber("mirror reflectivity");
+    m.mirror = mirror.value;
     if (m.mirror < 0.0 || m.mirror > 1.0)
-      failAt(line, "the mirror reflectivity must lie in [0, 1], got " + std::to_string(m.mirror));
+      failAt(mirror.line,
+             "the mirror reflectivity must lie in [0, 1], got " + std::to_string(m.mirror));
     return m;
   }
 
@@ -184,25 +189,27 @@ class SceneParser {
     c.eye = readVec3("camera eye");
     c.center = readVec3("camera center");
     c.up = readVec3("camera up vector");
-    const std::size_t fovLine = pos_ < tokens_.size() ? tokens_[pos_].line : entity_.line;
-    c.fovyDegrees = readNumber("camera fovy");
+    const Number fovy = readNumber("camera fovy");
+    c.fovyDegrees = fovy.value;
     c.width = readInt("image width", 1, kMaxImageSide);
     c.height = readInt("image height", 1, kMaxImageSide);
     if (static_cast<long long>(c.width) * c.height > kMaxImagePixels) {
-      failAt(entity_.line, "image of " + std::to_string(c.width) + "x" + std::to_string(c.height) +
-                               " pixels is larger than the " + std::to_string(kMaxImagePixels) +
-                               " accepted");
+      failAt(entityLine_, "image of " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+                              " pixels is larger than the " + std::to_string(kMaxImagePixels) +
+                              " accepted");
     }
     if (!(c.fovyDegrees > 0.0 && c.fovyDegrees < 180.0))
-      failAt(fovLine, "the camera fovy must lie strictly between 0 and 180 degrees");
-    if (c.eye == c.center) failAt(entity_.line, "the camera eye and center are the same point");
-    if (glm::length(c.up) == 0.0) failAt(entity_.line, "the camera up vector is the zero vector");
+      failAt(fovy.line, "the camera fovy must lie strictly between 0 and 180 degrees");
+    if (c.eye == c.center) failAt(entityLine_, "the camera eye and center are the same point");
+    if (glm::length(c.up) == 0.0) failAt(entityLine_, "the camera up vector is the zero vector");
     return c;
   }
 
   MeshLine readMeshLine() {
-    const Token& name = take("mesh file name");
-    const Token& mode = take("shading mode");
+    const text::Word name = take("mesh file name");
+    const std::filesystem::path file = file_.parent_path() / std::string(name.text);
+    const std::size_t line = name.line;
+    const text::Word mode = take("shading mode");
     Shading shading{};
     try {
       shading = parseShading(mode.text);
@@ -210,7 +217,7 @@ class SceneParser {
       failAt(mode.line, e.what());
     }
     const Material material = readMaterial();
-    return {file_.parent_path() / std::string(name.text), shading, material, name.line};
+    return {file, shading, material, line};
   }
 
   // The meshes load side by side once the whole scene file has parsed (a
@@ -242,22 +249,21 @@ class SceneParser {
   }
 
   const std::filesystem::path& file_;
-  std::vector<Token> tokens_;
-  std::size_t pos_ = 0;
-  Token entity_{};
+  text::TokenStream& words_;
+  std::string entity_;  // the keyword being read, for messages
+  std::size_t entityLine_ = 0;
 };
 }  // namespace
 
 Scene parseScene(std::string_view text, const std::filesystem::path& file) {
-  text::requireText(text, file);
-  return SceneParser(text, file).parse();
+  text::TokenStream words(text, file);
+  return SceneParser(words, file).parse();
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  const text::FileBytes data = text::readFile(file, kMaxSceneBytes);
-  if (data.text().find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw InputError::inFile(file, "empty scene file");
-  return parseScene(data.text(), file);
+  text::FileSource source(file, kMaxSceneBytes);
+  text::TokenStream words(source);
+  return SceneParser(words, file).parse();
 }
 
 }  // namespace meshtrace

@@ -1,60 +1,11 @@
 #include "io/text.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
+#include <algorithm>
 #include <charconv>
-#include <fstream>
+#include <cstring>
 #include <system_error>
 
-#include "meshtrace/io/input_error.h"
-
 namespace meshtrace::text {
-
-namespace {
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-}  // namespace
-
-FileBytes readFile(const std::filesystem::path& file, std::uintmax_t maxBytes) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (ec || !std::filesystem::exists(status)) throw InputError::inFile(file, "file not found");
-  if (std::filesystem::is_directory(status))
-    throw InputError::inFile(file, "is a directory, not a file");
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError::inFile(file, "cannot determine the file size");
-  if (size > maxBytes) {
-    throw InputError::inFile(file, "file is " + std::to_string(size) + " bytes, more than the " +
-                                       std::to_string(maxBytes) + " accepted");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError::inFile(file, "cannot open file for reading");
-  FileBytes data(static_cast<std::size_t>(size));
-  in.read(data.data(), static_cast<std::streamsize>(size));
-  if (static_cast<std::uintmax_t>(in.gcount()) != size)
-    throw InputError::inFile(file, "could not read the whole file");
-  return data;
-}
-
-void requireText(std::string_view text, const std::filesystem::path& file) {
-  // The first NUL byte: each block's first, the least of those.
-  constexpr std::size_t kBlock = std::size_t{1} << 20;
-  const std::size_t nul = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, (text.size() + kBlock - 1) / kBlock),
-      std::string_view::npos,
-      [&](const tbb::blocked_range<std::size_t>& r, std::size_t first) {
-        for (std::size_t b = r.begin(); b < r.end(); ++b) {
-          const std::size_t found = text.substr(b * kBlock, kBlock).find('\0');
-          if (found != std::string_view::npos) first = std::min(first, b * kBlock + found);
-        }
-        return first;
-      },
-      [](std::size_t a, std::size_t b) { return std::min(a, b); });
-  if (nul != std::string_view::npos) {
-    throw InputError::inFile(
-        file, "binary data (a NUL byte at offset " + std::to_string(nul) + "): not a text file");
-  }
-}
 
 bool parseDouble(std::string_view token, double& out) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
@@ -70,12 +21,48 @@ bool parseInt64(std::string_view token, std::int64_t& out) {
   return ec == std::errc() && ptr == end && !token.empty();
 }
 
+std::size_t wholeLinesEnd(std::string_view text, bool crAtEndEndsALine) {
+  std::size_t n = text.size();
+  if (!crAtEndEndsALine && n > 0 && text[n - 1] == '\r') --n;
+  const auto after = [&](const void* p) {
+    return p ? static_cast<std::size_t>(static_cast<const char*>(p) - text.data()) + 1 : 0;
+  };
+  // A CR before the last LF may be half of a CRLF; one after it is alone
+  // (the byte after it is known and is no LF): either way the later wins.
+  return std::max(after(::memrchr(text.data(), '\n', n)), after(::memrchr(text.data(), '\r', n)));
+}
+
+std::size_t countLineEnds(std::string_view text) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    n += text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'));
+  return n;
+}
+
+bool hasLoneCr(std::string_view text) {
+  const char* end = text.data() + text.size();
+  for (const char* p = text.data();; ++p) {
+    p = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(end - p)));
+    if (!p) return false;
+    if (p + 1 == end || p[1] != '\n') return true;
+  }
+}
+
 bool LineReader::nextNonEmpty(std::string_view& line) {
   while (pos_ < text_.size()) {
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string_view::npos) end = text_.size();
-    std::string_view raw = text_.substr(pos_, end - pos_);
-    pos_ = end + 1;
+    const char* begin = text_.data() + pos_;
+    const std::size_t left = text_.size() - pos_;
+    const auto* lf = static_cast<const char*>(std::memchr(begin, '\n', left));
+    std::size_t length = lf ? static_cast<std::size_t>(lf - begin) : left;
+    std::size_t next = lf ? length + 1 : left;
+    // A CR ends the line too, unless it is the CR of a CRLF.
+    const void* cr = loneCr_ ? std::memchr(begin, '\r', length) : nullptr;
+    if (cr) {
+      const auto at = static_cast<std::size_t>(static_cast<const char*>(cr) - begin);
+      if (!lf || at + 1 < length) length = at, next = at + 1;
+    }
+    std::string_view raw(begin, length);
+    pos_ += next;
     ++line_;
     const std::size_t hash = raw.find('#');
     if (hash != std::string_view::npos) raw = raw.substr(0, hash);

@@ -95,6 +95,56 @@ TEST(SceneParser, AcceptsCrlfLineEndsAndCountsLinesRight) {
                  {"bad.sce:3", "'bogus'"});
 }
 
+// A lone CR ends a line (and a comment), as editors show it.
+TEST(SceneParser, TakesALoneCrAsALineEnd) {
+  const Scene scene =
+      parseScene("# old Mac line ends\rcamera 0 0 5 0 0 0 0 1 0 45 8 6\rdepth 3\r", kSceneName);
+  EXPECT_EQ(scene.depth, 3);
+  expectMentions(sceneErrorOf("# a\rcamera 0 0 5 0 0 0 0 1 0 45 8 6\r\n\rbogus\n"),
+                 {"bad.sce:4", "'bogus'"});
+}
+
+// A scene file is read a block at a time: words that cross a block's end
+// and the lines after many blocks come out as written.
+TEST(SceneParser, ReadsASceneOfManyBlocks) {
+  const auto dir = test::scratchDir();
+  std::string text = kCameraLine;
+  for (int i = 0; i < 6000; ++i)
+    text += "sphere " + std::to_string(i) + ".125 -" + std::to_string(i) + " 0.5  " +
+            std::to_string(i + 1) + "  " + kMaterial + (i % 7 == 0 ? "\r\n" : "\n");
+  ASSERT_GT(text.size(), std::size_t{4} << 16) << "several blocks";
+  const Scene scene = loadScene(test::writeFile(dir / "many.sce", text));
+  ASSERT_EQ(scene.spheres.size(), 6000u);
+  for (int i : {0, 1234, 5999}) {
+    EXPECT_EQ(scene.spheres[i].center, Vec3(i + 0.125, -i, 0.5)) << i;
+    EXPECT_EQ(scene.spheres[i].radius, i + 1.0) << i;
+  }
+  expectMentions(
+      test::inputErrorOf([&] { loadScene(test::writeFile(dir / "bad.sce", text + "x\n")); }),
+      {"bad.sce:6002", "'x'"});
+}
+
+TEST(SceneParser, RejectsAWordLongerThanAnyPath) {
+  expectMentions(test::inputErrorOf([&] {
+                   loadScene(test::writeFile(test::scratchDir() / "bad.sce",
+                                             kCameraLine + "\nmesh " + std::string(100000, 'm')));
+                 }),
+                 {"bad.sce:3", "more than 65536 bytes"});
+}
+
+TEST(SceneParser, SaysASymlinkLoopIsOne) {
+  const auto dir = test::scratchDir();
+  std::filesystem::create_symlink("loop.sce", dir / "loop.sce");
+  const std::string message = test::inputErrorOf([&] { loadScene(dir / "loop.sce"); });
+  expectMentions(message, {"loop.sce", "symbolic links"});
+  EXPECT_EQ(message.find("not found"), std::string::npos) << message;
+}
+
+TEST(SceneParser, NamesTheLineOfANulByte) {
+  expectMentions(sceneErrorOf(kCameraLine + "depth 2\n\n" + std::string("sph\0ere", 7)),
+                 {"bad.sce:4", "NUL"});
+}
+
 TEST(SceneParser, AllowsAnEntitySpreadOverSeveralLines) {
   const Scene scene = parseScene(kCameraLine + "sphere 0 0 0\n 1\n" + kMaterial + "\n", kSceneName);
   EXPECT_EQ(scene.spheres.size(), 1u);
