@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <new>
 #include <stdexcept>
 #include <system_error>
 
@@ -55,10 +54,31 @@ std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
   return scenes;
 }
 
-std::optional<Scene> loadAndDescribe(const std::filesystem::path& file) {
+std::optional<std::uint64_t> memoryLimit(const std::string& option) {
+  if (option.empty()) return defaultMemoryLimit();
+  try {
+    return parseByteSize(option);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "error: --max-memory: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
+void printMemoryError(const std::filesystem::path& scene, const MemoryLimitError& e) {
+  std::fprintf(stderr, "error: %s: %s (--max-memory sets the limit)\n", scene.string().c_str(),
+               e.what());
+}
+
+std::uint64_t imageBytes(int width, int height) {
+  return static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+         (sizeof(Color) + 3);
+}
+
+std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget) {
   const auto start = std::chrono::steady_clock::now();
   try {
-    Scene scene = loadScene(file);
+    Scene scene = withinMemory("load", "the scene", budget.planned(),
+                               [&] { return loadScene(file, budget); });
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::printf(
         "loaded %s: %zu objects (%zu spheres, %zu planes, %zu cylinders, %zu meshes), "
@@ -70,17 +90,15 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return std::nullopt;
-  } catch (const std::bad_alloc&) {
-    // Files within the size limits can still need more memory than the
-    // machine has: say so rather than abort.
-    std::fprintf(stderr, "error: %s: not enough memory to load the scene\n", file.string().c_str());
+  } catch (const MemoryLimitError& e) {
+    printMemoryError(file, e);
     return std::nullopt;
   }
 }
 
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
-                  const std::string& prefix, const std::function<bool(const Scene&)>& wanted,
-                  const std::function<bool(const Scene&, const std::filesystem::path&)>& job) {
+                  const std::string& prefix, std::uint64_t memoryLimit,
+                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job) {
   if (!std::filesystem::is_directory(dir)) {
     std::fprintf(stderr, "error: %s: not a folder\n", dir.string().c_str());
     return 1;
@@ -104,14 +122,15 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
   }
   int failures = 0, done = 0;
   for (const auto& file : scenes) {
-    std::optional<Scene> scene = loadAndDescribe(file);
+    MemoryBudget budget(memoryLimit);
+    std::optional<Scene> scene = loadAndDescribe(file, budget);
     if (!scene) {
       ++failures;
       continue;
     }
     if (!wanted(*scene)) continue;
     const auto out = outDir / (prefix + file.stem().string() + ".png");
-    if (imageDestinationUsable(out) && job(*scene, out))
+    if (imageDestinationUsable(out) && job(*scene, out, budget))
       ++done;
     else
       ++failures;

@@ -10,25 +10,49 @@
 #include <vector>
 
 #include "meshtrace/geometry/scene.h"
+#include "meshtrace/io/memory_budget.h"
 
 namespace meshtrace::app {
+
+// The help text of --max-memory, the same in every tool.
+inline constexpr const char* kMaxMemoryHelp =
+    "Memory one scene may use, e.g. 4G or 512M; refused beyond it before allocating "
+    "(default: 3/4 of physical memory, less under ulimit -v)";
+
+// The limit --max-memory gives ("" for defaultMemoryLimit()); prints the
+// error and returns nothing if it is not a size.
+std::optional<std::uint64_t> memoryLimit(const std::string& option);
+
+// Prints the error of a scene that needs more memory than it may use.
+void printMemoryError(const std::filesystem::path& scene, const MemoryLimitError& e);
+
+// What an image of width x height takes from its render to its file: the
+// colours (24 bytes a pixel) and their 8-bit copy (3); the encoded file
+// (up to 9 with the growth of its buffer) comes once the colours are freed.
+std::uint64_t imageBytes(int width, int height);
 
 // Every .sce file below `dir`, sorted by path. Unreadable subfolders are
 // skipped; `ec` reports a folder that could not be listed at all.
 std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
                                               std::error_code& ec);
 
-// Loads a scene, prints its warnings and a one-line summary with the load
-// time. Prints the error and returns nothing on bad input.
-std::optional<Scene> loadAndDescribe(const std::filesystem::path& file);
+// Loads a scene within `budget`, prints its warnings and a one-line summary
+// with the load time. Prints the error and returns nothing on bad input or
+// when the scene needs more memory than the budget allows.
+std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget);
 
-// Runs `job(scene, outputPath)` for each scene under `dir` that `wanted`
-// accepts, writing to outDir/<prefix><stem>.png once that path is known to
-// be writable (imageDestinationUsable). Returns the process exit code: 0 if
-// every scene succeeded.
+// What a tool does with one loaded scene, within the scene's budget.
+using SceneJob =
+    std::function<bool(const Scene&, const std::filesystem::path& out, MemoryBudget& budget)>;
+
+// Runs `job` for each scene under `dir` that `wanted` accepts, each with a
+// budget of its own of `memoryLimit` bytes, writing to
+// outDir/<prefix><stem>.png once that path is known to be writable
+// (imageDestinationUsable). Returns the process exit code: 0 if every scene
+// succeeded.
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
-                  const std::string& prefix, const std::function<bool(const Scene&)>& wanted,
-                  const std::function<bool(const Scene&, const std::filesystem::path&)>& job);
+                  const std::string& prefix, std::uint64_t memoryLimit,
+                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job);
 
 // Whether an image could be written to `path` (checkImageDestination);
 // prints the error if not. Tools call it before loading and rendering, so

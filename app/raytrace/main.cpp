@@ -1,12 +1,15 @@
 // raytrace: render one scene, or every scene in a folder.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "common/batch.h"
+#include "meshtrace/io/memory_budget.h"
 #include "meshtrace/render/render.h"
 #include "meshtrace/report/left_out.h"
 #include "meshtrace/report/report.h"
@@ -21,39 +24,77 @@ struct Options {
   bool stats = false;
 };
 
-bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Options& options) {
-  Counters counters;
-  const auto buildStart = std::chrono::steady_clock::now();
-  const SceneIntersector intersector(scene, options.render.trace);
-  const double buildMs = app::millisecondsSince(buildStart);
-  const auto start = std::chrono::steady_clock::now();
-  const Image image = render(intersector, options.render.threads, &counters);
-  const double renderMs = app::millisecondsSince(start);
-  if (const SceneBvhStats* bvh = intersector.bvhStats()) {
-    const std::size_t meshes = bvh->meshesWithBvh, top = bvh->topLevelObjects;
-    std::printf("built the BVH (%zu mesh%s in the triangle BVH, %zu object%s on top) in %.1f ms\n",
-                meshes, meshes == 1 ? "" : "es", top, top == 1 ? "" : "s", buildMs);
-  }
+// "the BVH of 1000 triangles in 2 meshes and 3 objects"
+std::string bvhName(const Scene& scene) {
+  return "the BVH of " + std::to_string(scene.triangleCount()) + " triangles and " +
+         std::to_string(scene.objectCount()) + " objects";
+}
+
+std::string imageName(const Scene& scene) {
+  return "the image of " + std::to_string(scene.camera.width()) + "x" +
+         std::to_string(scene.camera.height()) + " pixels";
+}
+
+// Builds, renders and writes, each phase planned in `budget` before it
+// allocates and its running out of memory reported by name.
+bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Options& options,
+                  MemoryBudget& budget) {
   const TraceOptions& trace = options.render.trace;
-  std::printf("rendered %dx%d with --accel %s --triangle %s --precision %s in %.1f ms\n",
-              image.width, image.height, toString(trace.accel), toString(trace.triangle.test),
-              toString(trace.triangle.precision), renderMs);
-  if (options.stats) {
-    std::printf("%s", counters.describe().c_str());
-    std::printf("vertex normals computed: %zu\n", vertexNormalsComputed(scene));
-    for (const std::string& s : leftOut(scene)) std::printf("left out: %s\n", s.c_str());
-    if (const SceneBvhStats* bvh = intersector.bvhStats())
-      for (const std::string& s : bvh->leftOut) std::printf("left out: %s\n", s.c_str());
-  }
+  const int w = scene.camera.width(), h = scene.camera.height();
   try {
+    const std::uint64_t bvhBytes = accelerationBytes(scene, trace);
+    const std::uint64_t pixelBytes = app::imageBytes(w, h);
+    budget.reserve(bvhBytes, "build", bvhName(scene));
+    budget.reserve(pixelBytes, "render", imageName(scene));
+    Counters counters;
+    const auto buildStart = std::chrono::steady_clock::now();
+    const SceneIntersector intersector = withinMemory(
+        "build", bvhName(scene), bvhBytes, [&] { return SceneIntersector(scene, trace); });
+    const double buildMs = app::millisecondsSince(buildStart);
+    const auto start = std::chrono::steady_clock::now();
+    // The colours are freed once quantized: the file is encoded without them.
+    const Image8 pixels = withinMemory("render", imageName(scene), pixelBytes, [&] {
+      return quantize(render(intersector, options.render.threads, &counters));
+    });
+    const double renderMs = app::millisecondsSince(start);
+    if (const SceneBvhStats* bvh = intersector.bvhStats()) {
+      const std::size_t meshes = bvh->meshesWithBvh, top = bvh->topLevelObjects;
+      std::printf(
+          "built the BVH (%zu mesh%s in the triangle BVH, %zu object%s on top) in %.1f ms\n",
+          meshes, meshes == 1 ? "" : "es", top, top == 1 ? "" : "s", buildMs);
+    }
+    std::printf("rendered %dx%d with --accel %s --triangle %s --precision %s in %.1f ms\n", w, h,
+                toString(trace.accel), toString(trace.triangle.test),
+                toString(trace.triangle.precision), renderMs);
+    if (options.stats) {
+      std::printf("%s", counters.describe().c_str());
+      std::printf("vertex normals computed: %zu\n", vertexNormalsComputed(scene));
+      std::printf("memory planned: %s of the %s allowed (the BVH's build %s, the image %s)\n",
+                  formatBytes(budget.planned()).c_str(), formatBytes(budget.limit()).c_str(),
+                  formatBytes(bvhBytes).c_str(), formatBytes(pixelBytes).c_str());
+      for (const std::string& s : leftOut(scene)) std::printf("left out: %s\n", s.c_str());
+      if (const SceneBvhStats* bvh = intersector.bvhStats())
+        for (const std::string& s : bvh->leftOut) std::printf("left out: %s\n", s.c_str());
+    }
     const auto writeStart = std::chrono::steady_clock::now();
-    writeImage(quantize(image), out);
+    withinMemory("write", out.string(), pixelBytes, [&] { writeImage(pixels, out); });
     std::printf("wrote %s in %.1f ms\n", out.string().c_str(), app::millisecondsSince(writeStart));
+  } catch (const MemoryLimitError& e) {
+    app::printMemoryError(scene.file, e);
+    return false;
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return false;
   }
   return true;
+}
+
+// What --report plans for a scene: it keeps up to three BVHs (the default
+// one, a configuration's, and its primary hits') and per pixel an image,
+// its 8-bit copies and two hit records.
+std::uint64_t reportBytes(const Scene& scene) {
+  return 3 * accelerationBytes(scene, TraceOptions{}) +
+         std::uint64_t{128} * scene.camera.width() * scene.camera.height();
 }
 
 }  // namespace
@@ -80,7 +121,10 @@ int main(int argc, char** argv) {
   cli.add_option("--report", reportDir,
                  "Time SCENE... under many configurations and write report.md, report.csv and "
                  "error-against-time plots into DIR");
-  cli.add_flag("--stats", options.stats, "Print work counters and what the scene left out");
+  cli.add_flag("--stats", options.stats,
+               "Print work counters, the memory planned and what the scene left out");
+  std::string maxMemory;
+  cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
   cli.add_option("args", args, "SCENE.sce OUT.png, or with --all: [DIR] [OUTDIR]");
   CLI11_PARSE(cli, argc, argv);
 
@@ -91,6 +135,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
+  if (!memoryLimit) return 2;
   if (!reportDir.empty()) {
     if (args.empty()) {
       std::fprintf(stderr, "error: --report DIR needs at least one SCENE.sce\n");
@@ -99,13 +145,25 @@ int main(int argc, char** argv) {
     if (!app::reportDestinationUsable(reportDir)) return 1;
     std::vector<SceneReport> reports;
     for (const std::string& file : args) {
-      const auto scene = app::loadAndDescribe(file);
+      MemoryBudget budget(*memoryLimit);
+      const auto scene = app::loadAndDescribe(file, budget);
       if (!scene) return 1;
-      reports.push_back(measureScene(*scene, options.render.threads));
+      try {
+        const std::uint64_t bytes = reportBytes(*scene);
+        budget.reserve(bytes, "measure", "the configurations of " + file);
+        reports.push_back(withinMemory("measure", "the configurations of " + file, bytes, [&] {
+          return measureScene(*scene, options.render.threads);
+        }));
+      } catch (const MemoryLimitError& e) {
+        app::printMemoryError(file, e);
+        return 1;
+      }
       std::printf("measured %zu configurations of %s\n", reports.back().rows.size(), file.c_str());
     }
     try {
-      writeReport(reportDir, reports, stabilityMarkdown(measureStabilityTable(300)));
+      withinMemory("write", "the report into " + reportDir, 0, [&] {
+        writeReport(reportDir, reports, stabilityMarkdown(measureStabilityTable(300)));
+      });
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return 1;
@@ -121,9 +179,9 @@ int main(int argc, char** argv) {
     const std::filesystem::path dir = args.size() > 0 ? args[0] : "scenes";
     const std::filesystem::path outDir = args.size() > 1 ? args[1] : "results";
     return app::runOverFolder(
-        dir, outDir, "", [](const Scene&) { return true; },
-        [&](const Scene& scene, const std::filesystem::path& out) {
-          return renderToFile(scene, out, options);
+        dir, outDir, "", *memoryLimit, [](const Scene&) { return true; },
+        [&](const Scene& scene, const std::filesystem::path& out, MemoryBudget& budget) {
+          return renderToFile(scene, out, options, budget);
         });
   }
   if (args.size() != 2) {
@@ -131,7 +189,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!app::imageDestinationUsable(args[1])) return 1;
-  const auto scene = app::loadAndDescribe(args[0]);
+  MemoryBudget budget(*memoryLimit);
+  const auto scene = app::loadAndDescribe(args[0], budget);
   if (!scene) return 1;
-  return renderToFile(*scene, args[1], options) ? 0 : 1;
+  return renderToFile(*scene, args[1], options, budget) ? 0 : 1;
 }

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/inotify.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -79,11 +80,12 @@ ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::str
 
   ToolResult result;
   int status = 0;
+  rusage usage{};
   const auto deadline = start + std::chrono::duration<double>(run.timeoutSeconds);
-  while (::waitpid(pid, &status, WNOHANG) == 0) {
+  while (::wait4(pid, &status, WNOHANG, &usage) == 0) {
     if (std::chrono::steady_clock::now() > deadline) {
       ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
+      ::wait4(pid, &status, 0, &usage);
       result.timedOut = true;
       break;
     }
@@ -105,6 +107,7 @@ ToolResult runTool(const std::filesystem::path& tool, const std::vector<std::str
   }
   if (watch >= 0) ::close(watch);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.maxResidentBytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
   if (!result.timedOut && WIFEXITED(status)) {
     result.exited = true;
     result.exitCode = WEXITSTATUS(status);

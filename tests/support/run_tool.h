@@ -3,6 +3,7 @@
 // reports how it ended and what it printed.
 #include <sys/resource.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@ struct ToolResult {
   bool signalSent = false;  // ToolRun::signalOnTemporary was sent
   std::string out, err;     // stdout and stderr
   double seconds = 0.0;
+  std::uint64_t maxResidentBytes = 0;  // the tool's peak resident memory
 };
 
 // How a tool runs, besides its arguments. The child starts with every

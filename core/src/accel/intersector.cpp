@@ -1,5 +1,7 @@
 #include "meshtrace/accel/intersector.h"
 
+#include <tbb/task_arena.h>
+
 #include "accel/primitive_query.h"
 #include "accel/scene_bvh.h"
 #include "meshtrace/util/enum_names.h"
@@ -15,6 +17,43 @@ constexpr EnumName<AccelMethod> kAccelMethods[] = {
 const char* toString(AccelMethod method) { return nameIn(kAccelMethods, method); }
 AccelMethod parseAccelMethod(std::string_view name) {
   return parseNamed(kAccelMethods, name, "acceleration method");
+}
+
+namespace {
+// The binned build's peak per triangle: its reference (32 bytes), room for
+// two nodes (2 x 32) and its place in the leaf order (4). Collapsing to
+// 8-wide nodes keeps that tree (68) beside at most 9 bytes per binary node
+// (2 per triangle) and the 8-wide nodes (256 bytes per 8 triangles or
+// more); the triangle blocks (160 bytes per block of up to 4, 2 or more on
+// average) come once the binary tree is gone. 128 covers the largest stage
+// with a margin.
+constexpr std::uint64_t kBuildBytesPerTriangle = 128;
+// With several meshes each one's tree (68 per triangle) is kept until all
+// are joined into one copy of them.
+constexpr std::uint64_t kJoinBytesPerTriangle = 68;
+// Each vertex's box while its mesh's tree is built.
+constexpr std::uint64_t kBuildBytesPerVertex = 32;
+// A top-level object: its box, reference, nodes and share of 8-wide nodes.
+constexpr std::uint64_t kBuildBytesPerObject = 256;
+// A thread's buffer for the small subtrees it builds alone.
+constexpr std::uint64_t kBuildBytesPerThread = std::uint64_t{256} << 10;
+}  // namespace
+
+std::uint64_t accelerationBytes(const Scene& scene, const TraceOptions& options) {
+  if (options.accel != AccelMethod::Bvh) return 0;
+  std::uint64_t triangles = 0, vertices = 0, meshes = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    const std::size_t n = mesh.triangles().size();
+    if (n == 0 || n < options.bvh.minMeshTriangles) continue;
+    triangles += n;
+    vertices += mesh.vertices().size();
+    ++meshes;
+  }
+  const std::uint64_t objects = scene.objectCount() + 1;
+  const auto threads = static_cast<std::uint64_t>(tbb::this_task_arena::max_concurrency());
+  return triangles * (kBuildBytesPerTriangle + (meshes > 1 ? kJoinBytesPerTriangle : 0)) +
+         vertices * kBuildBytesPerVertex + objects * kBuildBytesPerObject +
+         threads * kBuildBytesPerThread;
 }
 
 SceneIntersector::SceneIntersector(const Scene& scene, const TraceOptions& options)

@@ -3,6 +3,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -39,7 +40,8 @@ constexpr std::size_t kPieceBytes = std::size_t{1} << 18;
 
 class OffParser {
  public:
-  OffParser(text::FileSource& source) : file_(source.file()), source_(source) {}
+  OffParser(text::FileSource& source, MemoryBudget& budget)
+      : file_(source.file()), source_(source), budget_(budget) {}
 
   MeshData parse() {
     text::LinePieces pieces(source_, kPieceBytes);
@@ -62,8 +64,11 @@ class OffParser {
                                    std::to_string(nf_) + " faces, more than a " +
                                    std::to_string(size) + "-byte file can hold");
     }
+    const std::string name = file_.filename().string();
+    budget_.reserve(vertexCount * sizeof(Vec3), "load",
+                    "the " + std::to_string(nv_) + " vertices of " + name);
     mesh_.vertices.resize(static_cast<std::size_t>(nv_));
-    mesh_.triangles.reserve(static_cast<std::size_t>(nf_));  // exact for a triangle mesh
+    growTriangles(static_cast<std::size_t>(nf_));  // exact for a triangle mesh
     readBody(pieces, std::move(first), headerLines);
     if (error_) std::rethrow_exception(error_);
     if (elements_ < nv_ + nf_) {
@@ -190,6 +195,17 @@ class OffParser {
         }));
   }
 
+  // Room for `capacity` triangles, planned before it is allocated: the new
+  // array, and the old one until it is copied.
+  void growTriangles(std::size_t capacity) {
+    const std::size_t old = mesh_.triangles.capacity();
+    budget_.reserve(capacity * sizeof(TriangleIndices), "load",
+                    "the triangles of " + file_.filename().string() + " (room for " +
+                        std::to_string(capacity) + ")");
+    mesh_.triangles.reserve(capacity);
+    budget_.release(old * sizeof(TriangleIndices));
+  }
+
   static void count(Chunk& c) {
     c.loneCr = text::hasLoneCr(c.text());
     text::LineReader lines(c.text(), c.loneCr);
@@ -208,6 +224,16 @@ class OffParser {
       return;
     }
     elements_ = std::min(c.firstElement + c.elements, nv_ + nf_);
+    if (mesh_.triangles.size() + c.triangles.size() > mesh_.triangles.capacity()) {
+      try {
+        growTriangles(
+            std::max(2 * mesh_.triangles.capacity(), mesh_.triangles.size() + c.triangles.size()));
+      } catch (const MemoryLimitError&) {
+        error_ = std::current_exception();
+        done = true;
+        return;
+      }
+    }
     mesh_.triangles.insert(mesh_.triangles.end(), c.triangles.begin(), c.triangles.end());
     if (c.piece.nulAfter()) {
       error_ = std::make_exception_ptr(nulError(c.lineBefore + c.lines + 1));
@@ -258,6 +284,12 @@ class OffParser {
     tokens.next(token);
     if (!text::parseInt64(token, corners)) fail(": bad corner count " + quoted(token));
     if (corners < 3) fail(" has " + std::to_string(corners) + " corners; at least 3 are needed");
+    // A polygon lists each of its corners once: more corners than the mesh
+    // has vertices would only repeat them, and fan into as many triangles.
+    if (corners > nv_) {
+      fail(" has " + std::to_string(corners) + " corners, more than the " + std::to_string(nv_) +
+           " vertices of the mesh");
+    }
     std::uint32_t first = 0, previous = 0;
     for (std::int64_t k = 0; k < corners; ++k) {
       std::int64_t v = 0;
@@ -278,6 +310,7 @@ class OffParser {
 
   std::filesystem::path file_;
   text::FileSource& source_;
+  MemoryBudget& budget_;
   std::int64_t nv_ = 0, nf_ = 0;
   MeshData mesh_;
   std::int64_t elements_ = 0;  // elements read before the first error
@@ -285,9 +318,14 @@ class OffParser {
 };
 }  // namespace
 
-MeshData readOff(const std::filesystem::path& file) {
+MeshData readOff(const std::filesystem::path& file, MemoryBudget& budget) {
   text::FileSource source(file, kMaxOffBytes);
-  return OffParser(source).parse();
+  return OffParser(source, budget).parse();
+}
+
+MeshData readOff(const std::filesystem::path& file) {
+  MemoryBudget budget(defaultMemoryLimit());
+  return readOff(file, budget);
 }
 
 }  // namespace meshtrace

@@ -33,8 +33,8 @@ struct MeshLine {
 
 class SceneParser {
  public:
-  SceneParser(text::TokenStream& words, const std::filesystem::path& file)
-      : file_(file), words_(words) {}
+  SceneParser(text::TokenStream& words, const std::filesystem::path& file, MemoryBudget& budget)
+      : file_(file), words_(words), budget_(budget) {}
 
   Scene parse() {
     Scene scene;
@@ -231,7 +231,10 @@ class SceneParser {
     tbb::parallel_for(std::size_t{0}, lines.size(), [&](std::size_t i) {
       const MeshLine& m = lines[i];
       try {
-        loaded[i].emplace(m.file, readOff(m.file), m.shading, m.material);
+        MeshData data = readOff(m.file, budget_);
+        budget_.reserve(normalsBytes(data, m.shading), "load",
+                        "the normals of " + m.file.filename().string());
+        loaded[i].emplace(m.file, std::move(data), m.shading, m.material);
       } catch (const InputError& e) {
         failed[i] = std::make_exception_ptr(
             InputError::atLine(file_, m.line, std::string("mesh: ") + e.what()));
@@ -248,8 +251,18 @@ class SceneParser {
     return meshes;
   }
 
+  // What a Mesh computes from `data`: a normal per triangle and, for PHONG,
+  // one per vertex, with the arrays that sum them (mesh.cpp).
+  static std::uint64_t normalsBytes(const MeshData& data, Shading shading) {
+    const std::uint64_t triangles = data.triangles.size(), vertices = data.vertices.size();
+    std::uint64_t bytes = triangles * sizeof(Vec3);
+    if (shading == Shading::Phong) bytes += vertices * (sizeof(Vec3) + 8) + triangles * 13;
+    return bytes;
+  }
+
   const std::filesystem::path& file_;
   text::TokenStream& words_;
+  MemoryBudget& budget_;
   std::string entity_;  // the keyword being read, for messages
   std::size_t entityLine_ = 0;
 };
@@ -257,13 +270,19 @@ class SceneParser {
 
 Scene parseScene(std::string_view text, const std::filesystem::path& file) {
   text::TokenStream words(text, file);
-  return SceneParser(words, file).parse();
+  MemoryBudget budget(defaultMemoryLimit());
+  return SceneParser(words, file, budget).parse();
+}
+
+Scene loadScene(const std::filesystem::path& file, MemoryBudget& budget) {
+  text::FileSource source(file, kMaxSceneBytes);
+  text::TokenStream words(source);
+  return SceneParser(words, file, budget).parse();
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  text::FileSource source(file, kMaxSceneBytes);
-  text::TokenStream words(source);
-  return SceneParser(words, file).parse();
+  MemoryBudget budget(defaultMemoryLimit());
+  return loadScene(file, budget);
 }
 
 }  // namespace meshtrace

@@ -253,8 +253,8 @@ TEST(OffReader, RejectsAFaceWithFewerThanThreeCorners) {
 }
 
 TEST(OffReader, RejectsAFaceListingFewerIndicesThanItsCornerCount) {
-  expectMentions(offErrorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n"),
-                 {"mesh.off:6", "face 0", "announces 4 corners"});
+  expectMentions(offErrorOf("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n"),
+                 {"mesh.off:7", "face 0", "announces 4 corners"});
 }
 
 TEST(OffReader, RejectsAHugeCornerCountWithoutLooping) {
@@ -262,6 +262,30 @@ TEST(OffReader, RejectsAHugeCornerCountWithoutLooping) {
   expectMentions(offErrorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n"),
                  {"mesh.off:6", "face 0"});
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+// A polygon lists each corner once: a face of more corners than the mesh
+// has vertices repeats them, and would fan into as many triangles.
+TEST(OffReader, RejectsAFaceOfMoreCornersThanTheMeshHasVertices) {
+  expectMentions(offErrorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 0\n"),
+                 {"mesh.off:6", "face 0", "4 corners", "3 vertices"});
+}
+
+// The arrays are planned before they are allocated: a budget too small for
+// them refuses the mesh, naming it.
+TEST(OffReader, RefusesArraysBeyondItsMemoryBudget) {
+  const LargeOff off = largeOff(60000, 120000);
+  const auto file = test::writeFile(test::scratchDir() / "mesh.off", off.text);
+  MemoryBudget budget(1 << 20);  // the vertices alone need 1.4 MB
+  try {
+    readOff(file, budget);
+    FAIL() << "the mesh was read within 1 MB";
+  } catch (const MemoryLimitError& e) {
+    expectMentions(e.what(), {"cannot load the 60000 vertices of mesh.off", "limit of 1.0 MB"});
+  }
+  MemoryBudget enough(16 << 20);
+  EXPECT_EQ(readOff(file, enough).triangles.size(), off.expected.triangles.size());
+  EXPECT_GE(enough.planned(), 60000 * sizeof(Vec3) + off.expected.triangles.size() * 12);
 }
 
 TEST(OffReader, RejectsANanVertexNamingTheLine) {

@@ -26,6 +26,12 @@ class ExternalIntersector {
   virtual bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters) const = 0;
 };
 
+// About how many bytes constructing a SceneIntersector for `scene` with
+// `options` allocates at the peak of its build: an estimate with a margin,
+// from the sizes of the build's arrays, for a caller to check against a
+// memory limit before building. 0 for the methods that build nothing.
+std::uint64_t accelerationBytes(const Scene& scene, const TraceOptions& options);
+
 class SceneIntersector {
  public:
   // Builds the BVH when options.accel is Bvh.

@@ -4,13 +4,17 @@
 #include <string_view>
 
 #include "meshtrace/geometry/scene.h"
+#include "meshtrace/io/memory_budget.h"
 
 namespace meshtrace {
 
 // Throws InputError naming the file and line on bad input. Mesh paths are
 // resolved against the scene file's folder; the meshes are read, side by
 // side, once the whole scene file has parsed, and of several bad meshes the
-// first in the file is the one reported.
+// first in the file is the one reported. The meshes' arrays are reserved
+// in `budget` before they are allocated (MemoryLimitError beyond its limit).
+Scene loadScene(const std::filesystem::path& file, MemoryBudget& budget);
+// With a budget of defaultMemoryLimit().
 Scene loadScene(const std::filesystem::path& file);
 
 // Parses scene text that claims to come from `file` (used for messages and
