@@ -41,6 +41,13 @@ std::vector<BadInput> makeBadInputs() {
       badScene("AbsurdSize", camera(kView, "45 100000 100000"), {"bad.sce:1", "width"}),
       badScene("EyeEqualsCenter", camera("1 1 1  1 1 1  0 1 0", "45 8 6"), {"bad.sce:1", "eye"}),
       badScene("FovyZero", camera(kView, "0 8 6"), {"bad.sce:1", "fovy"}),
+      // Cameras whose rays would not be finite: a NaN camera renders black.
+      badScene("EyeAndCenterATinyBitApart", camera("0 0 0  5e-324 0 0  0 1 0", "45 8 6"),
+               {"bad.sce:1", "5e-324 apart", "too close to define a view direction"}),
+      badScene("EyeFarOutWithAWideView", camera("1e308 0 0  0 0 0  0 1 0", "90 8 6"),
+               {"bad.sce:1", "1e+308 apart", "too large"}),
+      badScene("LightTooFarToShade", kCameraLine + "light 1e200 0 0  1 1 1\n" + sphere + "\n",
+               {"bad.sce:2", "light", "too far"}),
       badScene("NegativeDepth", kCameraLine + "depth -2\n", {"bad.sce:2", "depth"}),
       badScene("NegativeRadius", kCameraLine + "sphere 0 0 0 -1 " + kMaterial + "\n",
                {"bad.sce:2", "radius"}),
@@ -63,6 +70,10 @@ std::vector<BadInput> makeBadInputs() {
               {"mesh.off:6", "out of range"}),
       badMesh("OffNegativeIndex", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -2 1\n",
               {"mesh.off:6", "out of range"}),
+      badMesh("OffFaceOfMoreCornersThanVertices", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n5 0 1 2 0 1\n",
+              {"mesh.off:6", "5 corners"}),
+      badMesh("OffLoneCrJoiningNothing", "OFF\r\n3 1 0\r\n0 0 0\r\n1 0\r0\r\n0 1 0\r\n3 0 1 2\r\n",
+              {"mesh.off:4", "vertex 1"}),
       badMesh("OffNanVertex", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n",
               {"mesh.off:4", "vertex 1"}),
       badMesh("OffCountsInTheBillions", "OFF\n4000000000 8000000000 0\n0 0 0\n",
@@ -72,6 +83,12 @@ std::vector<BadInput> makeBadInputs() {
                           "ELF\x02\x01\0\0\x03\0",
                           10),
               {"binary"}),
+      badMesh("OffNulOnALine",
+              [] {
+                const char text[] = "OFF\n3 1 0\n0.0 0.0 0.0\n1.0 \0 0\n0 1 0\n3 0 1 2\n";
+                return std::string(text, sizeof text - 1);
+              }(),
+              {"mesh.off:4", "NUL"}),
   };
 }
 

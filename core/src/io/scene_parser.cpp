@@ -63,6 +63,7 @@ class SceneParser {
         light.position = readVec3("light position");
         light.color = readVec3("light colour");
         scene.lights.push_back(light);
+        lightLines_.push_back(entityLine_);
       } else if (k == "sphere") {
         Sphere s;
         s.center = readVec3("sphere center");
@@ -98,6 +99,7 @@ class SceneParser {
                                "using another axis as up");
     }
     scene.meshes = loadMeshes(meshLines);
+    checkLights(scene);
     return scene;
   }
 
@@ -162,12 +164,14 @@ class SceneParser {
     return n.value;
   }
 
+  // A unit vector from three numbers of any size: (1e-200, 0, 0) is the x
+  // axis, only (0, 0, 0) has no direction.
   Vec3 readDirection(const std::string& what) {
     std::size_t line = 0;
     const Vec3 v = readVec3(what, &line);
-    const double len = glm::length(v);
-    if (!(len > 0.0) || !std::isfinite(len)) failAt(line, "the " + what + " is the zero vector");
-    return v / len;
+    if (v == Vec3(0.0)) failAt(line, "the " + what + " is the zero vector");
+    const Vec3 scaled = scaledToUnitRange(v);
+    return scaled / glm::length(scaled);
   }
 
   Material readMaterial() {
@@ -200,8 +204,8 @@ class SceneParser {
     }
     if (!(c.fovyDegrees > 0.0 && c.fovyDegrees < 180.0))
       failAt(fovy.line, "the camera fovy must lie strictly between 0 and 180 degrees");
-    if (c.eye == c.center) failAt(entityLine_, "the camera eye and center are the same point");
-    if (glm::length(c.up) == 0.0) failAt(entityLine_, "the camera up vector is the zero vector");
+    const std::string problem = cameraProblem(c);
+    if (!problem.empty()) failAt(entityLine_, problem);
     return c;
   }
 
@@ -251,6 +255,40 @@ class SceneParser {
     return meshes;
   }
 
+  // Shading normalises the direction from each lit point to each light: its
+  // squared length must stay finite, so no light may be farther than this
+  // from a point of the scene (3 x 1e306 < 1.8e308, the largest double).
+  static constexpr double kMaxLightReach = 1e153;
+
+  // Each light against the farthest point the scene can shade: the eye,
+  // the plane points and the corners of every bounded object's box.
+  void checkLights(const Scene& scene) const {
+    Aabb reach;
+    reach.extend(scene.camera.spec().eye);
+    for (const Plane& p : scene.planes) reach.extend(p.point);
+    for (const Sphere& s : scene.spheres) {
+      reach.extend(s.center - Vec3(s.radius));
+      reach.extend(s.center + Vec3(s.radius));
+    }
+    for (const Cylinder& c : scene.cylinders) {
+      const Vec3 half(c.radius + 0.5 * c.height);
+      reach.extend(c.center - half);
+      reach.extend(c.center + half);
+    }
+    for (const Mesh& m : scene.meshes)
+      if (!m.bounds().empty()) reach.extend(m.bounds());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      const Vec3& light = scene.lights[i].position;
+      const double far =
+          std::max(maxAbsComponent(light - reach.min), maxAbsComponent(light - reach.max));
+      if (!(far <= kMaxLightReach)) {
+        failAt(lightLines_[i], "the light is too far from the scene: " + shortestText(far) +
+                                   " from its farthest point, where directions to it overflow "
+                                   "double precision (at most 1e+153)");
+      }
+    }
+  }
+
   // What a Mesh computes from `data`: a normal per triangle and, for PHONG,
   // one per vertex, with the arrays that sum them (mesh.cpp).
   static std::uint64_t normalsBytes(const MeshData& data, Shading shading) {
@@ -263,7 +301,8 @@ class SceneParser {
   const std::filesystem::path& file_;
   text::TokenStream& words_;
   MemoryBudget& budget_;
-  std::string entity_;  // the keyword being read, for messages
+  std::vector<std::size_t> lightLines_;  // the line of each light
+  std::string entity_;                   // the keyword being read, for messages
   std::size_t entityLine_ = 0;
 };
 }  // namespace

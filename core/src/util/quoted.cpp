@@ -1,5 +1,7 @@
 #include "meshtrace/util/quoted.h"
 
+#include <charconv>
+
 namespace meshtrace {
 
 std::string quoted(std::string_view token) {
@@ -11,6 +13,12 @@ std::string quoted(std::string_view token) {
   }
   if (token.size() > kShown) s += "...";
   return s + "'";
+}
+
+std::string shortestText(double x) {
+  char buffer[32];
+  const char* end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+  return std::string(buffer, static_cast<std::size_t>(end - buffer));
 }
 
 }  // namespace meshtrace

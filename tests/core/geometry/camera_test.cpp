@@ -87,5 +87,69 @@ TEST(Camera, ReplacesAnUpVectorParallelToTheView) {
   }
 }
 
+// An up vector of any length gives its direction: 1e-200, 1e200 or 5e-324
+// along y is the up of the same vector scaled near 1 by a power of two, bit
+// for bit, and y itself to rounding.
+TEST(Camera, TakesAnUpVectorOfAnyLength) {
+  const Vec3 eye(1, 2, 5);
+  const Camera unit(spec(eye, Vec3(0.0), Vec3(0, 1, 0), 45, 8, 6));
+  for (const double y : {1e-200, 1e200, 5e-324}) {
+    int e = 0;
+    std::frexp(y, &e);
+    const Camera camera(spec(eye, Vec3(0.0), Vec3(0, y, 0), 45, 8, 6));
+    const Camera nearOne(spec(eye, Vec3(0.0), Vec3(0, std::ldexp(y, -e), 0), 45, 8, 6));
+    EXPECT_FALSE(camera.upWasReplaced()) << y;
+    for (const auto& [px, py] : {std::pair{0, 0}, {7, 5}, {3, 2}}) {
+      EXPECT_EQ(camera.primaryRay(px, py).direction, nearOne.primaryRay(px, py).direction) << y;
+      expectNear(camera.primaryRay(px, py).direction, unit.primaryRay(px, py).direction, 1e-15);
+    }
+  }
+  EXPECT_EQ(cameraProblem(spec(Vec3(0, 0, 5), Vec3(0.0), Vec3(1e-200, 0, 0), 45, 8, 6)), "")
+      << "(1e-200, 0, 0) is the x axis, not the zero vector";
+  EXPECT_NE(cameraProblem(spec(Vec3(0, 0, 5), Vec3(0.0), Vec3(0.0), 45, 8, 6)).find("zero vector"),
+            std::string::npos);
+}
+
+TEST(CameraProblem, NoneForTheCamerasOfTheSpec) {
+  EXPECT_EQ(cameraProblem(spec(Vec3(1, 2, 3), Vec3(-0.5, 0.25, 0), Vec3(0.1, 1, 0.2), 50, 40, 30)),
+            "");
+  EXPECT_EQ(cameraProblem(spec(Vec3(0, 0, 1e-100), Vec3(0.0), Vec3(0, 1, 0), 45, 8, 6)), "")
+      << "a tiny scene, far above underflow";
+  EXPECT_EQ(cameraProblem(spec(Vec3(0, 0, 1e100), Vec3(0.0), Vec3(0, 1, 0), 45, 8, 6)), "");
+  EXPECT_EQ(cameraProblem(spec(Vec3(0, 0, 5), Vec3(0.0), Vec3(0, 1, 0), 179.9999, 1, 1)), "");
+}
+
+void expectProblem(const CameraSpec& s, std::initializer_list<std::string_view> parts) {
+  const std::string problem = cameraProblem(s);
+  for (std::string_view part : parts)
+    EXPECT_NE(problem.find(part), std::string::npos)
+        << "'" << problem << "' lacks '" << part << "'";
+}
+
+TEST(CameraProblem, SaysEyeAndCenterAreTooCloseToDefineAView) {
+  expectProblem(spec(Vec3(0.0), Vec3(5e-324, 0, 0), Vec3(0, 1, 0), 45, 8, 6),
+                {"eye and center are 5e-324 apart: too close to define a view direction"});
+  expectProblem(spec(Vec3(0, 0, 1e-300), Vec3(0.0), Vec3(0, 1, 0), 45, 8, 6),
+                {"1e-300 apart", "too close to define a view direction"});
+  expectProblem(spec(Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3(0, 1, 0), 45, 8, 6), {"same point"});
+}
+
+TEST(CameraProblem, SaysTheImagePlaneIsTooLarge) {
+  expectProblem(spec(Vec3(1e308, 0, 0), Vec3(0.0), Vec3(0, 1, 0), 90, 8, 6),
+                {"eye and center are 1e+308 apart with fovy 90", "too large"});
+  expectProblem(spec(Vec3(0, 0, 1e160), Vec3(0.0), Vec3(0, 1, 0), 45, 8, 6), {"too large"});
+  expectProblem(spec(Vec3(-1e308, 0, 0), Vec3(1e308, 0, 0), Vec3(0, 1, 0), 45, 8, 6),
+                {"too far apart", "overflows"});
+}
+
+// Eye and center 1e-5 apart at x = 1e10, where doubles are 2e-6 apart: the
+// pixels' rays would be rounded to a few directions.
+TEST(CameraProblem, SaysNeighbouringPixelsCannotBeToldApart) {
+  expectProblem(spec(Vec3(1e10, 0, 0), Vec3(1e10, 1e-5, 0), Vec3(0, 0, 1), 45, 8, 6),
+                {"1e-05 apart at coordinates up to 1e+10", "neighbouring pixels"});
+  EXPECT_EQ(cameraProblem(spec(Vec3(1e10, 0, 0), Vec3(1e10, 100, 0), Vec3(0, 0, 1), 45, 80, 60)),
+            "");
+}
+
 }  // namespace
 }  // namespace meshtrace

@@ -145,6 +145,18 @@ TEST(SceneParser, NamesTheLineOfANulByte) {
                  {"bad.sce:4", "NUL"});
 }
 
+// Directions of any length: only the zero vector has none.
+TEST(SceneParser, TakesDirectionsOfAnyLength) {
+  const Scene scene = parseScene(kCameraLine + "plane 0 0 0  1e-200 0 0  " + kMaterial +
+                                     "\ncylinder 0 0 0 1  0 1e200 1e200  2 " + kMaterial +
+                                     "\ncamera 0 0 5  0 0 0  1e-200 0 0  45 8 6\n",
+                                 kSceneName);
+  EXPECT_EQ(scene.planes[0].normal, Vec3(1, 0, 0));
+  EXPECT_NEAR(glm::length(scene.cylinders[0].axis), 1.0, 1e-15);
+  EXPECT_EQ(scene.cylinders[0].axis.y, scene.cylinders[0].axis.z);
+  EXPECT_FALSE(scene.camera.upWasReplaced());
+}
+
 TEST(SceneParser, AllowsAnEntitySpreadOverSeveralLines) {
   const Scene scene = parseScene(kCameraLine + "sphere 0 0 0\n 1\n" + kMaterial + "\n", kSceneName);
   EXPECT_EQ(scene.spheres.size(), 1u);
@@ -263,6 +275,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"FovyNegative", "camera 0 0 5 0 0 0 0 1 0 -30 8 6", "fovy"},
         BadLine{"Fovy180", "camera 0 0 5 0 0 0 0 1 0 180 8 6", "fovy"},
         BadLine{"ZeroUp", "camera 0 0 5 0 0 0 0 0 0 45 8 6", "up"},
+        BadLine{"EyeAndCenterATinyBitApart", "camera 0 0 0 5e-324 0 0 0 1 0 45 8 6",
+                "eye and center are 5e-324 apart: too close to define a view direction"},
+        BadLine{"EyeFarOutWithAWideView", "camera 1e308 0 0 0 0 0 0 1 0 90 8 6", "too large"},
+        BadLine{"LightTooFarToShade", "light 1e200 0 0 1 1 1", "too far"},
         BadLine{"NegativeDepth", "depth -1", "depth"},
         BadLine{"FractionalDepth", "depth 1.5", "depth"},
         BadLine{"NegativeSphereRadius", "sphere 0 0 0 -1 " + kMaterial, "radius"},

@@ -1,6 +1,8 @@
 #pragma once
 // The pinhole camera of the scene format: no half-pixel offset, y = 0 is the
 // bottom row.
+#include <string>
+
 #include "meshtrace/util/math.h"
 
 namespace meshtrace {
@@ -17,9 +19,9 @@ struct CameraSpec {
 class Camera {
  public:
   Camera() = default;
-  // Precondition: the spec was validated (eye != center, 0 < fovy < 180,
-  // positive size). An up vector parallel to the view is replaced by another
-  // axis; `upWasReplaced()` reports it so callers can warn.
+  // Precondition: cameraProblem(spec) is empty. An up vector parallel to
+  // the view is replaced by another axis; `upWasReplaced()` reports it so
+  // callers can warn. Up may be of any length, 1e-200 as well as 1e200.
   explicit Camera(const CameraSpec& spec);
 
   const CameraSpec& spec() const { return spec_; }
@@ -36,5 +38,13 @@ class Camera {
   Vec3 xDir_{0.0}, yDir_{0.0}, lowerLeft_{0.0};
   bool upWasReplaced_ = false;
 };
+
+// What makes `spec` unusable, or "" if nothing does. Besides a size, fovy
+// or vector out of range, it is checked where it is used: the camera's rays
+// at the image's corners and centre must be finite unit vectors, and
+// neighbouring pixels must get rays as far apart as the pixels are. The
+// message says which limit was met, for example "eye and center are
+// 5e-324 apart: too close to define a view direction".
+std::string cameraProblem(const CameraSpec& spec);
 
 }  // namespace meshtrace

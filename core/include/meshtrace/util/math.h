@@ -57,4 +57,15 @@ inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// `v` times the power of two 2^-e that brings its largest component into
+// [0.5, 1) (e goes to `exponent`): exact, so v's direction can be taken
+// from it even where v's own squares underflow (1e-200) or overflow
+// (1e200), with the same bits where they do not. `v` finite and not zero.
+inline Vec3 scaledToUnitRange(const Vec3& v, int* exponent = nullptr) {
+  int e = 0;
+  std::frexp(maxAbsComponent(v), &e);
+  if (exponent) *exponent = e;
+  return {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+}
+
 }  // namespace meshtrace

@@ -9,4 +9,8 @@ namespace meshtrace {
 
 std::string quoted(std::string_view token);
 
+// A number in a message: the shortest text that reads back as it, so that
+// 5e-324 shows as 5e-324, not 4.94066e-324 or 0.000000.
+std::string shortestText(double x);
+
 }  // namespace meshtrace
