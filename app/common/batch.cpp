@@ -99,11 +99,13 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBu
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
                   const std::string& prefix, std::uint64_t memoryLimit,
                   const std::function<bool(const Scene&)>& wanted, const SceneJob& job) {
-  if (!std::filesystem::is_directory(dir)) {
-    std::fprintf(stderr, "error: %s: not a folder\n", dir.string().c_str());
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {
+    // A symlink loop or a missing folder is said as such, not as "not a folder".
+    std::fprintf(stderr, "error: %s: %s\n", dir.string().c_str(),
+                 ec ? ec.message().c_str() : "not a folder");
     return 1;
   }
-  std::error_code ec;
   std::filesystem::create_directories(outDir, ec);
   if (ec) {
     std::fprintf(stderr, "error: %s: cannot create the output folder (%s)\n",

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -17,7 +18,9 @@ namespace meshtrace {
 namespace {
 
 using test::debugAabbTool;
+using test::folderWithGoodScene;
 using test::raytraceTool;
+using test::renderArgs;
 
 constexpr rlim_t kMiB = rlim_t{1} << 20;
 
@@ -167,6 +170,43 @@ TEST(DebugAabbMemory, AWideImageUnder900MegabytesEndsCleanly) {
     EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
     test::expectMentions(r.err, {"render the box counts of 16384x2048 pixels"});
   }
+}
+
+// Files are checked as they stream: the tool finds the mistake on line 2
+// of a 250 MB scene within an address space of 64 MB (which the tiny
+// scene's whole run fits in), where reading the file first took 3.3 GB.
+TEST(RaytraceMemory, FindsAMistakeEarlyInAHugeSceneInLittleMemory) {
+  const auto dir = folderWithGoodScene();
+  constexpr rlim_t kAddressSpace = rlim_t{64} << 20;
+  test::expectSuccess(raytraceTool(), renderArgs(dir, "out.png"), dir);
+  const auto fits = test::runTool(raytraceTool(), renderArgs(dir, "out.png"), dir,
+                                  {.addressSpace = kAddressSpace});
+  ASSERT_TRUE(fits.exited && fits.exitCode == 0)
+      << "the tiny scene must fit: " << test::describe(fits);
+
+  const auto huge = test::writeFile(dir / "huge.sce", test::kCameraLine + "bogus 1 2 3\n");
+  std::filesystem::resize_file(huge, 250'000'000);  // the rest never gets read
+  const auto r = test::runTool(raytraceTool(), {huge.string(), (dir / "out.png").string()}, dir,
+                               {.addressSpace = kAddressSpace});
+  std::filesystem::remove(huge);
+  EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+  test::expectMentions(r.err, {"huge.sce:2", "unknown keyword 'bogus'"});
+}
+
+// A line of 100 MB (a comment) costs no more memory than a short one.
+TEST(RaytraceMemory, ReadsPastAHundredMegabyteLineInLittleMemory) {
+  const auto dir = folderWithGoodScene();
+  const auto file = dir / "long.sce";
+  {
+    std::ofstream out(file, std::ios::binary);
+    out << test::kCameraLine << "# " << std::string(100'000'000, 'x') << "\nbogus\n";
+    ASSERT_TRUE(out.flush());
+  }
+  const auto r = test::runTool(raytraceTool(), {file.string(), (dir / "out.png").string()}, dir,
+                               {.addressSpace = rlim_t{64} << 20});
+  std::filesystem::remove(file);
+  EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+  test::expectMentions(r.err, {"long.sce:3", "unknown keyword 'bogus'"});
 }
 
 // One face of 50 million corners over 3 vertices fanned into 50 million

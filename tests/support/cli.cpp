@@ -6,6 +6,7 @@
 
 #include "support/files.h"
 #include "support/paths.h"
+#include "support/scene_snippets.h"
 
 namespace meshtrace::test {
 
@@ -38,6 +39,23 @@ void expectRefusesBadInput(const std::filesystem::path& tool, const BadInput& in
   writeFile(dir / "out.png", kOldOutput);
   expectRefusal(tool, {(dir / "bad.sce").string(), (dir / "out.png").string()}, dir, input.mentions,
                 dir / "out.png");
+}
+
+std::filesystem::path folderWithGoodScene() {
+  const auto dir = scratchDir();
+  writeFile(dir / "tri.off", kTriangleOff);
+  writeFile(dir / "good.sce", kCameraLine + "light 0 0 10 1 1 1\n" + kSphereLine +
+                                  "mesh tri.off PHONG " + kMaterial + "\n");
+  return dir;
+}
+
+std::vector<std::string> renderArgs(const std::filesystem::path& dir, const std::string& out) {
+  return {(dir / "good.sce").string(), (dir / out).string()};
+}
+
+void expectRefusedBeforeRendering(const ToolResult& r) {
+  EXPECT_EQ(r.out.find("loaded"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.out.find("rendered"), std::string::npos) << describe(r);
 }
 
 ToolResult expectSuccess(const std::filesystem::path& tool, const std::vector<std::string>& args,

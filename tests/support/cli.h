@@ -30,6 +30,16 @@ ToolResult expectRefusal(const std::filesystem::path& tool, const std::vector<st
 // and expects a clean refusal.
 void expectRefusesBadInput(const std::filesystem::path& tool, const BadInput& input);
 
+// A scratch folder holding good.sce (a sphere and a one-triangle mesh,
+// 8x6 pixels) and its mesh, tri.off.
+std::filesystem::path folderWithGoodScene();
+// `dir`/good.sce and `dir`/`out`: the arguments that render one to the other.
+std::vector<std::string> renderArgs(const std::filesystem::path& dir, const std::string& out);
+
+// An output that cannot be written is refused before the scene is loaded
+// and rendered, not after a long render.
+void expectRefusedBeforeRendering(const ToolResult& r);
+
 // Runs `tool args...` in `dir` and checks that it succeeded.
 ToolResult expectSuccess(const std::filesystem::path& tool, const std::vector<std::string>& args,
                          const std::filesystem::path& dir);
