@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <new>
 #include <stdexcept>
 #include <system_error>
 
@@ -77,8 +78,7 @@ std::uint64_t imageBytes(int width, int height) {
 std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget) {
   const auto start = std::chrono::steady_clock::now();
   try {
-    Scene scene = withinMemory("load", "the scene", budget.planned(),
-                               [&] { return loadScene(file, budget); });
+    Scene scene = loadScene(file, budget);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::printf(
         "loaded %s: %zu objects (%zu spheres, %zu planes, %zu cylinders, %zu meshes), "
@@ -92,6 +92,10 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBu
     return std::nullopt;
   } catch (const MemoryLimitError& e) {
     printMemoryError(file, e);
+    return std::nullopt;
+  } catch (const std::bad_alloc&) {
+    // What was planned when the allocation failed: the arrays loaded so far.
+    printMemoryError(file, MemoryLimitError::outOfMemory("load", "the scene", budget.planned()));
     return std::nullopt;
   }
 }

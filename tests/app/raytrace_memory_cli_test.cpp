@@ -80,6 +80,9 @@ TEST(RaytraceMemory, RefusesAMaxMemoryThatIsNoSize) {
 // resident memory (measured against brute force, which builds nothing),
 // and is not a wild overestimate of it.
 TEST(RaytraceMemory, TheBvhPlanCoversWhatTheBuildTakes) {
+  if (test::kBuiltWithAsan)
+    GTEST_SKIP() << "AddressSanitizer's redzones and quarantine change resident memory: the "
+                    "plan is measured in the build without it";
   const auto dir = test::scratchDir();
   const auto scene = knotScene(dir);
   const auto none =
@@ -106,6 +109,7 @@ struct LimitedRun {
 // signal, and when it fails, a message about memory. Both the load and
 // the build fail at some limit, and a generous one renders.
 TEST(RaytraceMemory, NeverAbortsUnderAnAddressSpaceLimit) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = test::scratchDir();
   const auto scene = knotScene(dir);
   for (const bool plan : {true, false}) {
@@ -138,6 +142,7 @@ TEST(RaytraceMemory, NeverAbortsUnderAnAddressSpaceLimit) {
 
 // 16384 x 2048 pixels need 864 MB from the render to the 8-bit copy.
 TEST(RaytraceMemory, AWideImageUnder900MegabytesEndsCleanly) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = test::scratchDir();
   const auto scene = test::writeFile(
       dir / "wide.sce", "camera 0 0 5  0 0 0  0 1 0  45  16384 2048\n" + test::kSphereLine);
@@ -156,6 +161,7 @@ TEST(RaytraceMemory, AWideImageUnder900MegabytesEndsCleanly) {
 }
 
 TEST(DebugAabbMemory, AWideImageUnder900MegabytesEndsCleanly) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = test::scratchDir();
   test::writeFile(dir / "tri.off", test::kTriangleOff);
   const auto scene = test::writeFile(dir / "wide.sce",
@@ -176,6 +182,7 @@ TEST(DebugAabbMemory, AWideImageUnder900MegabytesEndsCleanly) {
 // of a 250 MB scene within an address space of 64 MB (which the tiny
 // scene's whole run fits in), where reading the file first took 3.3 GB.
 TEST(RaytraceMemory, FindsAMistakeEarlyInAHugeSceneInLittleMemory) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = folderWithGoodScene();
   constexpr rlim_t kAddressSpace = rlim_t{64} << 20;
   test::expectSuccess(raytraceTool(), renderArgs(dir, "out.png"), dir);
@@ -195,6 +202,7 @@ TEST(RaytraceMemory, FindsAMistakeEarlyInAHugeSceneInLittleMemory) {
 
 // A line of 100 MB (a comment) costs no more memory than a short one.
 TEST(RaytraceMemory, ReadsPastAHundredMegabyteLineInLittleMemory) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = folderWithGoodScene();
   const auto file = dir / "long.sce";
   {
@@ -213,6 +221,7 @@ TEST(RaytraceMemory, ReadsPastAHundredMegabyteLineInLittleMemory) {
 // triangles (5.8 GB with their BVH): a polygon lists each vertex once, so
 // the face is refused at its line, and the 100 MB line costs its own size.
 TEST(RaytraceMemory, RefusesAFaceOfMoreCornersThanVertices) {
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   const auto dir = test::scratchDir();
   {
     std::FILE* f = std::fopen((dir / "face.off").c_str(), "wb");

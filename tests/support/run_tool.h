@@ -43,7 +43,26 @@ inline ToolResult runTool(const std::filesystem::path& tool, const std::vector<s
   return runTool(tool, args, workDir, ToolRun{.timeoutSeconds = timeoutSeconds});
 }
 
+// Whether this build (tests and tools alike) uses AddressSanitizer, whose
+// shadow memory takes terabytes of address space: a ToolRun::addressSpace
+// limit, or one the test process sets itself, cannot apply to it.
+inline constexpr bool kBuiltWithAsan =
+#ifdef __SANITIZE_ADDRESS__
+    true;
+#else
+    false;
+#endif
+
 // Prints a ToolResult in failure messages.
 std::string describe(const ToolResult& r);
 
 }  // namespace meshtrace::test
+
+// Skips a test that limits address space when the build uses
+// AddressSanitizer (scripts/sanitize.sh); the ordinary build runs it.
+#define MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN()                                           \
+  do {                                                                                       \
+    if (::meshtrace::test::kBuiltWithAsan)                                                   \
+      GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space for its shadow " \
+                      "memory: address-space limits are tested in the build without it";     \
+  } while (0)

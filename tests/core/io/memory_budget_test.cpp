@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "support/files.h"
+#include "support/run_tool.h"
 
 namespace meshtrace {
 namespace {
@@ -87,6 +88,7 @@ TEST(WithinMemory, TurnsRunningOutIntoAMessageNamingThePhase) {
 TEST(DefaultMemoryLimit, IsAShareOfPhysicalMemoryAndOfTheAddressSpaceLeft) {
   EXPECT_LE(defaultMemoryLimit(), physicalMemoryBytes());
   EXPECT_GE(defaultMemoryLimit(), physicalMemoryBytes() / 2);
+  MESHTRACE_SKIP_ADDRESS_LIMITS_UNDER_ASAN();
   rlimit saved{};
   ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
   rlimit limited = saved;
