@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "render/progressive_job.h"
+#include "render/progressive_preview.h"
 
 namespace meshtrace {
 
@@ -24,21 +25,35 @@ void sampleOffset(int k, double& dx, double& dy) {
 }
 
 struct PreparedScene::Lazy {
-  std::once_flag built;
+  std::once_flag once;
+  std::atomic<bool> built{false};
+  std::unique_ptr<PreviewGrid> grid;  // the Preview structure
   std::unique_ptr<SceneIntersector> intersector;
 };
 
-PreparedScene::PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options)
-    : scene_(std::move(scene)), options_(options), lazy_(std::make_unique<Lazy>()) {}
+PreparedScene::PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options,
+                             SceneStructure structure)
+    : scene_(std::move(scene)),
+      options_(options),
+      structure_(structure),
+      lazy_(std::make_unique<Lazy>()) {}
 
 PreparedScene::~PreparedScene() = default;
 
 const SceneIntersector& PreparedScene::intersector() const {
-  std::call_once(lazy_->built, [&] {
-    lazy_->intersector = std::make_unique<SceneIntersector>(*scene_, options_);
+  std::call_once(lazy_->once, [&] {
+    if (structure_ == SceneStructure::Preview) {
+      lazy_->grid = std::make_unique<PreviewGrid>(*scene_, options_.triangle);
+      lazy_->intersector = std::make_unique<SceneIntersector>(*scene_, options_, *lazy_->grid);
+    } else {
+      lazy_->intersector = std::make_unique<SceneIntersector>(*scene_, options_);
+    }
+    lazy_->built.store(true, std::memory_order_release);
   });
   return *lazy_->intersector;
 }
+
+bool PreparedScene::built() const { return lazy_->built.load(std::memory_order_acquire); }
 
 // The workers and the job they share. Workers take the current job's items
 // (a tile in a pass) in order; a new job replaces the current one, and the
@@ -253,6 +268,7 @@ ProgressiveStatus ProgressiveRenderer::Impl::status() const {
   s.firstCoarseMs = job->firstCoarseMs;
   s.exactMs = job->exactMs;
   s.finishedMs = job->finishedMs;
+  s.passMs = job->passMs;
   s.elapsedMs =
       s.finished && job->finishedMs >= 0 ? job->finishedMs : msBetween(job->start, Clock::now());
   s.counters = job->counters;
@@ -277,7 +293,8 @@ std::vector<int> ProgressiveRenderer::Impl::update(ProgressiveFrame& frame) cons
     frame.tilesY = job->tilesY;
     frame.rgba.resize(job->settings.color ? pixels * 4 : 0);
     frame.probes = {};
-    frame.probeStorage.reset();
+    frame.exactRgba = {};
+    frame.storage.reset();
     frame.tileStep.assign(job->tileCount, 0);
     frame.tileVersion.assign(job->tileCount, 0);
   }
@@ -287,10 +304,12 @@ std::vector<int> ProgressiveRenderer::Impl::update(ProgressiveFrame& frame) cons
     frame.tileVersion[t] = job->tileVersion[t].load(std::memory_order_relaxed);
     frame.tileStep[t] = job->tileStep[t];
     changed.push_back(t);
-    if (job->settings.probes && !frame.probeStorage) {
-      // Published probes never change again: the frame reads the job's.
-      frame.probeStorage = job->buffers;
+    if (!frame.storage) {
+      // Published probes and exact colours never change again: the frame
+      // reads the job's.
+      frame.storage = job->buffers;
       frame.probes = job->buffers->probes;
+      frame.exactRgba = job->buffers->exactRgba;
     }
     if (frame.rgba.empty()) continue;
     const int c0 = (t % job->tilesX) * job->tile, r0 = (t / job->tilesX) * job->tile;

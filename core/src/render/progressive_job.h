@@ -32,6 +32,9 @@ struct Buffers {
   std::vector<Color> sum;          // worker side: sum of the samples per pixel, for AA passes
   std::vector<PixelProbe> probes;  // written once per pixel, read where published
   std::vector<std::uint8_t> rgba;  // published colours, under the tile's lock
+  // With anti-aliasing passes: each tile's exact colours, copied from
+  // `rgba` when its exact pass is published and never changed after.
+  std::vector<std::uint8_t> exactRgba;
 };
 
 class BufferPool : public std::enable_shared_from_this<BufferPool> {
@@ -100,6 +103,7 @@ struct Job {
   mutable std::mutex statsMutex;
   Counters counters;
   double firstCoarseMs = -1.0, exactMs = -1.0, finishedMs = -1.0;
+  std::vector<double> passMs;  // per pass, -1 until complete
 
   Job(std::uint64_t jobId, std::shared_ptr<const PreparedScene> s, const Camera& cam,
       const ProgressiveSettings& st, std::shared_ptr<BufferPool> buffersFrom)
@@ -111,12 +115,15 @@ struct Job {
     tilesY = (height + tile - 1) / tile;
     tileCount = tilesX * tilesY;
     for (int s2 = tile; s2 >= 1; s2 /= 2) steps.push_back(s2);
-    passCount = static_cast<int>(steps.size()) + (settings.color ? settings.extraSamples : 0);
+    passCount = settings.firstPassOnly
+                    ? 1
+                    : static_cast<int>(steps.size()) + (settings.color ? settings.extraSamples : 0);
     itemCount = passCount * tileCount;
     tilePasses.reset(new std::atomic<int>[tileCount]);
     for (int i = 0; i < tileCount; ++i) tilePasses[i] = 0;
     passTiles.reset(new std::atomic<int>[passCount]);
     for (int i = 0; i < passCount; ++i) passTiles[i] = 0;
+    passMs.assign(passCount, -1.0);
     tileStep.assign(tileCount, 0);
     tileVersion.reset(new std::atomic<std::uint32_t>[tileCount]);
     for (int i = 0; i < tileCount; ++i) tileVersion[i] = 0;
@@ -131,6 +138,7 @@ struct Job {
     buffers->sum.resize(settings.color && settings.extraSamples > 0 ? pixels : 0);
     buffers->probes.resize(settings.probes ? pixels : 0);
     buffers->rgba.resize(settings.color ? pixels * 4 : 0);
+    buffers->exactRgba.resize(passCount > levelCount() && settings.color ? pixels * 4 : 0);
   }
 
   // The largest power of two <= v, at least 1.
@@ -209,12 +217,15 @@ struct Job {
     if (!complete) return false;
     publish(t, pass, step, c0, r0, c1, r1, fresh, work);
     exactPixelsDone += traced;
+    // Read before the tile's next pass may start elsewhere: a later pass
+    // never gets an earlier time than this one.
+    const double ms = msBetween(start, Clock::now());
     tilePasses[t].store(pass + 1, std::memory_order_release);
     const int tilesDone = ++passTiles[pass];
     ++itemsDone;
     if (tilesDone == tileCount) {
-      const double ms = msBetween(start, Clock::now());
       std::lock_guard<std::mutex> lock(statsMutex);
+      passMs[pass] = ms;
       if (pass == 0) firstCoarseMs = ms;
       if (pass == levelCount() - 1) exactMs = ms;
       if (pass == passCount - 1) finishedMs = ms;
@@ -241,6 +252,10 @@ struct Job {
         std::copy(v.begin(), v.end(), &rgba[index(c, r) * 4]);
         return true;
       });
+    if (pass == levelCount() - 1 && !buffers->exactRgba.empty())
+      for (int r = r0; r < r1; ++r)
+        std::copy(&rgba[index(c0, r) * 4], &rgba[index(c1, r) * 4],
+                  &buffers->exactRgba[index(c0, r) * 4]);
     tileStep[t] = step;
     tileVersion[t].fetch_add(1, std::memory_order_release);
     lock.unlock();

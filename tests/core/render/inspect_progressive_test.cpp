@@ -87,6 +87,24 @@ TEST(Progressive, ExtraSamplesAverageJitteredRays) {
   for (int k = 0; k < 3; ++k) EXPECT_EQ(frame.rgba[(row * 32 + x) * 4 + k], toByte(mean[k]));
 }
 
+TEST(Progressive, AntiAliasingKeepsEachTilesExactColoursBeside) {
+  const auto scene = progressiveScene(40, 30);
+  ProgressiveRenderer renderer(2);
+  ProgressiveSettings settings;
+  settings.firstStep = 8;
+  settings.extraSamples = 2;
+  const ProgressiveFrame frame = renderToEnd(renderer, scene, settings);
+  ASSERT_EQ(frame.exactRgba.size(), frame.rgba.size());
+  ProgressiveFrame exact = frame;
+  exact.rgba.assign(frame.exactRgba.begin(), frame.exactRgba.end());
+  EXPECT_EQ(rgbOf(exact), quantize(render(*scene, {})).rgb);
+  EXPECT_NE(rgbOf(frame), rgbOf(exact)) << "the anti-aliased colours differ at edges";
+
+  settings.extraSamples = 0;
+  EXPECT_TRUE(renderToEnd(renderer, scene, settings).exactRgba.empty())
+      << "without anti-aliasing the colours are the exact ones";
+}
+
 TEST(Progressive, ProbesMatchProbePixelAndCoarseTilesStandForBlocks) {
   const auto scene = progressiveScene(40, 30);
   ProgressiveRenderer renderer(2);

@@ -22,21 +22,41 @@
 
 namespace meshtrace {
 
+// What a PreparedScene traces through.
+enum class SceneStructure {
+  Full,  // the intersector of options.accel (the BVH by default): the exact image
+  // A uniform grid over every mesh's triangles, made in one pass over them
+  // (tens of ms for a million triangles, where the BVH takes hundreds):
+  // for a first coarse pass while the BVH builds. It tests the same
+  // triangle kernel and keeps the same nearest hit, but a spawned ray is
+  // not told the triangle it leaves (spawn.h), so a pixel can differ from
+  // the exact image: show its passes as a preview only.
+  Preview,
+};
+
 // A scene with its intersector (and so its BVH), built once on first use by
-// whichever thread needs it first, and shared by every job and inspector
-// query on that scene: moving the camera does not rebuild it.
+// whichever thread needs it first (or by build()), and shared by every job
+// and inspector query on that scene: moving the camera does not rebuild it.
 class PreparedScene {
  public:
-  PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options);
+  PreparedScene(std::shared_ptr<const Scene> scene, const TraceOptions& options,
+                SceneStructure structure = SceneStructure::Full);
   ~PreparedScene();
   const Scene& scene() const { return *scene_; }
+  const std::shared_ptr<const Scene>& sharedScene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
+  SceneStructure structure() const { return structure_; }
+  // Builds the intersector on the first call; later calls wait for it.
   const SceneIntersector& intersector() const;
+  // True once the intersector is built: a caller that must not wait (a
+  // viewer's UI thread) asks this first.
+  bool built() const;
 
  private:
   struct Lazy;  // the intersector and the flag that builds it once
   std::shared_ptr<const Scene> scene_;
   TraceOptions options_;
+  SceneStructure structure_;
   std::unique_ptr<Lazy> lazy_;
 };
 
@@ -45,6 +65,9 @@ struct ProgressiveSettings {
   int extraSamples = 0;  // anti-aliasing samples per pixel beyond the exact one
   bool color = true;     // trace colours (the Integrator)
   bool probes = false;   // record a PixelProbe per pixel for the false-colour views
+  // Only the first pass: a quick look (e.g. through a preview structure)
+  // that a full job replaces.
+  bool firstPassOnly = false;
 };
 
 struct ProgressiveStatus {
@@ -56,7 +79,8 @@ struct ProgressiveStatus {
   int samplesPerPixel = 0;  // complete samples in every pixel
   double elapsedMs = 0.0;   // since start; stops when the job finishes
   double firstCoarseMs = -1.0, exactMs = -1.0, finishedMs = -1.0;  // -1 until reached
-  Counters counters;                                               // work of the published tiles
+  std::vector<double> passMs;  // per pass, when it was complete (ms since start); -1 until then
+  Counters counters;           // work of the published tiles
 };
 
 // What a pass that just completed brings: the first (coarse) image, the
@@ -74,10 +98,13 @@ struct PassFinished {
 struct ProgressiveFrame {
   std::uint64_t job = 0;
   int width = 0, height = 0, tileSize = 0, tilesX = 0, tilesY = 0;
-  std::vector<std::uint8_t> rgba;            // row 0 at the top
-  std::span<const PixelProbe> probes;        // the job's own
-  std::shared_ptr<const void> probeStorage;  // keeps `probes` alive
-  std::vector<int> tileStep;                 // 0 while a tile has nothing yet
+  std::vector<std::uint8_t> rgba;      // row 0 at the top
+  std::span<const PixelProbe> probes;  // the job's own
+  // With anti-aliasing passes, which change `rgba`, the exact colours of
+  // each tile from its exact pass on (the job's own; empty without them).
+  std::span<const std::uint8_t> exactRgba;
+  std::shared_ptr<const void> storage;  // keeps `probes` and `exactRgba` alive
+  std::vector<int> tileStep;            // 0 while a tile has nothing yet
   std::vector<std::uint32_t> tileVersion;
 
   // What stands for storage pixel (col, row) at its tile's step; null
