@@ -4,6 +4,7 @@
 
 #include "meshtrace/render/render.h"
 #include "meshtrace/render/surface.h"
+#include "render/inspect_bvh.h"
 #include "render/whitted.h"
 
 namespace meshtrace {
@@ -104,7 +105,9 @@ class Recorder {
     current().reflects = reflects;
   }
   void endBounce(const Color& c) {
-    current().color = c;
+    BounceRecord& b = current();
+    b.color = c;
+    b.nodes = bvhNodesEntered(intersector_, b.ray, b.hit ? b.surface.t : kInfinity);
     open_.pop_back();
   }
 

@@ -180,6 +180,68 @@ TEST(Inspect, ProbeAgreesWithTheInspectionAndWithDebugAabb) {
   });
 }
 
+TEST(Inspect, TheBvhNodesEnteredLeadFromEachRootToTheHit) {
+  const Scene scene = inspectionScene();
+  const SceneIntersector intersector(scene, TraceOptions{});
+  int meshHits = 0;
+  inspectEveryPixel(scene, intersector, [&](int x, int y, const PixelInspection& in) {
+    const BounceRecord& b = in.bounces[0];
+    const double tMax = b.hit ? b.surface.t * (1.0 + 1e-6) : kInfinity;
+    const RayInverse inverse(b.ray);
+    bool objectsRoot = false, leafHoldingTheHit = false;
+    for (const BvhNodeBox& n : b.nodes) {
+      double t0, t1;
+      ASSERT_TRUE(intersectSlabs(n.box, inverse, 0.0, tMax, t0, t1)) << x << "," << y;
+      objectsRoot = objectsRoot || (n.level == BvhLevel::Objects && n.depth == 0);
+      const Vec3 p = b.surface.point;
+      const double slack = 1e-6;
+      leafHoldingTheHit =
+          leafHoldingTheHit || (n.level == BvhLevel::Triangles && n.leaf &&
+                                glm::all(glm::greaterThanEqual(p, n.box.min - slack)) &&
+                                glm::all(glm::lessThanEqual(p, n.box.max + slack)));
+    }
+    if (!b.hit || b.surface.ref.kind != ObjectKind::Mesh) return;
+    ++meshHits;
+    EXPECT_TRUE(objectsRoot) << x << "," << y;
+    EXPECT_TRUE(leafHoldingTheHit) << "the leaf of the hit triangle is entered: " << x << "," << y;
+  });
+  EXPECT_GT(meshHits, 100);
+  TraceOptions none;
+  none.accel = AccelMethod::None;
+  const SceneIntersector bruteForce(scene, none);
+  EXPECT_TRUE(inspectPixel(bruteForce, scene.camera, 10, 10).bounces[0].nodes.empty());
+}
+
+TEST(Inspect, ABvhCutCoversEveryTriangleAtEveryDepth) {
+  const Scene scene = inspectionScene();
+  const SceneIntersector intersector(scene, TraceOptions{});
+  const BvhCut root = bvhCut(intersector, BvhLevel::Triangles, 0, 1000);
+  ASSERT_EQ(root.boxes.size(), 1u);
+  EXPECT_GE(root.levelDepth, 2);
+  for (int depth = 0; depth <= root.levelDepth; ++depth) {
+    const BvhCut cut = bvhCut(intersector, BvhLevel::Triangles, depth, 100000);
+    EXPECT_FALSE(cut.truncated);
+    for (const BvhNodeBox& n : cut.boxes) EXPECT_TRUE(n.depth == depth || n.leaf);
+    for (const Mesh& mesh : scene.meshes)
+      for (const TriangleIndices& t : mesh.triangles()) {
+        const Vec3 c =
+            (mesh.vertices()[t[0]] + mesh.vertices()[t[1]] + mesh.vertices()[t[2]]) / 3.0;
+        bool inside = false;
+        for (const BvhNodeBox& n : cut.boxes)
+          inside = inside || (glm::all(glm::greaterThanEqual(c, n.box.min - 1e-6)) &&
+                              glm::all(glm::lessThanEqual(c, n.box.max + 1e-6)));
+        ASSERT_TRUE(inside) << "depth " << depth;
+      }
+  }
+  const BvhCut deepest = bvhCut(intersector, BvhLevel::Triangles, root.levelDepth, 100000);
+  for (const BvhNodeBox& n : deepest.boxes) EXPECT_TRUE(n.leaf);
+  const BvhCut few = bvhCut(intersector, BvhLevel::Triangles, root.levelDepth, 3);
+  EXPECT_EQ(few.boxes.size(), 3u);
+  EXPECT_TRUE(few.truncated);
+  // The objects' level: the sphere and the triangle BVH under one root.
+  EXPECT_EQ(bvhCut(intersector, BvhLevel::Objects, 0, 10).boxes.size(), 1u);
+}
+
 TEST(Inspect, ObjectIndexNumbersKindsInSceneOrder) {
   const Scene scene = inspectionScene();  // 1 sphere, 1 plane, 0 cylinders, 2 meshes
   EXPECT_EQ(objectIndex(scene, {ObjectKind::Sphere, 0, 0}), 0);

@@ -44,12 +44,32 @@ struct BoxRecord {
   double tEnter = 0.0, tExit = 0.0;
 };
 
+// The two levels of the scene's BVH (--accel bvh): the objects' tree
+// (spheres, cylinders, small meshes and the triangle BVH as one object),
+// and the triangle BVH over the larger meshes.
+enum class BvhLevel : std::uint8_t { Objects, Triangles };
+const char* toString(BvhLevel level);
+
+// A node of the scene's BVH, for drawing: its box (its children's, as the
+// traversal tests them), its depth in its level (the root at 0), whether
+// it is a leaf.
+struct BvhNodeBox {
+  Aabb box;
+  int depth = 0;
+  BvhLevel level = BvhLevel::Triangles;
+  bool leaf = false;
+};
+
 struct BounceRecord {
   int level = 0;
   Ray ray;
   bool hit = false;
   SurfaceRecord surface;
   std::vector<BoxRecord> boxes;
+  // The BVH nodes of both levels whose box the ray meets before its hit:
+  // those every closest-hit traversal enters (one that meets a farther hit
+  // first enters more). Empty without a BVH.
+  std::vector<BvhNodeBox> nodes;
   Color ambient{0.0};
   std::vector<LightRecord> lights;
   Color local{0.0};       // ambient plus every light
@@ -69,6 +89,16 @@ struct PixelInspection {
 // Through `camera`, which need not be the scene's own.
 PixelInspection inspectPixel(const SceneIntersector& intersector, const Camera& camera, double x,
                              double y);
+
+// The nodes of one level of the scene's BVH at `depth`, with the leaves
+// that end above it: together they cover everything the level holds.
+struct BvhCut {
+  std::vector<BvhNodeBox> boxes;  // at most the limit asked for, in the tree's order
+  bool truncated = false;         // more nodes lie at that depth
+  int levelDepth = 0;             // the deepest node of the level
+};
+// Empty without a BVH (--accel bvh) or a level that holds nothing.
+BvhCut bvhCut(const SceneIntersector& intersector, BvhLevel level, int depth, std::size_t limit);
 
 // What the false-colour views need from a primary ray, cheaply.
 struct PixelProbe {
