@@ -55,6 +55,11 @@ CameraSpec zoom(const CameraSpec& camera, double steps) {
   return out;
 }
 
+bool sameCamera(const CameraSpec& a, const CameraSpec& b) {
+  return a.eye == b.eye && a.center == b.center && a.up == b.up && a.fovyDegrees == b.fovyDegrees &&
+         a.width == b.width && a.height == b.height;
+}
+
 std::string cameraLine(const CameraSpec& c) {
   std::string s = "camera";
   // Appending piece by piece (GCC 12 warns falsely about " " + string).

@@ -18,6 +18,9 @@ CameraSpec pan(const CameraSpec& camera, double dxPixels, double dyPixels);
 // Moves the eye toward the centre (steps > 0) or away, 10% of the distance a step.
 CameraSpec zoom(const CameraSpec& camera, double steps);
 
+// The same camera in every field.
+bool sameCamera(const CameraSpec& a, const CameraSpec& b);
+
 // "camera ex ey ez cx cy cz ux uy uz fovy width height", shortest round-trip numbers.
 std::string cameraLine(const CameraSpec& camera);
 

@@ -40,29 +40,47 @@ const std::map<std::string_view, std::size_t>& operandCounts() {
       {"sphere", 15}, {"plane", 17}, {"cylinder", 19},  {"mesh", 13}};
   return counts;
 }
-}  // namespace
 
-std::string rewriteMeshModes(std::string_view text, const std::vector<Shading>& modes) {
+// The token of each mesh's shading word.
+std::vector<Token> modeTokens(std::string_view text) {
   const std::vector<Token> tokens = tokenize(text);
-  std::vector<Token> modeTokens;
+  std::vector<Token> modes;
   for (std::size_t i = 0; i < tokens.size();) {
     const std::string_view word = text.substr(tokens[i].begin, tokens[i].end - tokens[i].begin);
     const auto it = operandCounts().find(word);
     if (it == operandCounts().end())
       throw std::runtime_error("unexpected word '" + std::string(word) + "'");
-    if (word == "mesh" && i + 2 < tokens.size()) modeTokens.push_back(tokens[i + 2]);
+    if (word == "mesh" && i + 2 < tokens.size()) modes.push_back(tokens[i + 2]);
     i += 1 + it->second;
   }
-  if (modeTokens.size() != modes.size()) {
-    throw std::runtime_error("the file has " + std::to_string(modeTokens.size()) +
+  return modes;
+}
+}  // namespace
+
+std::vector<Shading> meshModes(std::string_view text) {
+  std::vector<Shading> modes;
+  for (const Token& t : modeTokens(text)) {
+    try {
+      modes.push_back(parseShading(text.substr(t.begin, t.end - t.begin)));
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(e.what());
+    }
+  }
+  return modes;
+}
+
+std::string rewriteMeshModes(std::string_view text, const std::vector<Shading>& modes) {
+  const std::vector<Token> tokens = modeTokens(text);
+  if (tokens.size() != modes.size()) {
+    throw std::runtime_error("the file has " + std::to_string(tokens.size()) +
                              " meshes, the scene " + std::to_string(modes.size()));
   }
   std::string out;
   std::size_t pos = 0;
   for (std::size_t m = 0; m < modes.size(); ++m) {
-    out.append(text.substr(pos, modeTokens[m].begin - pos));
+    out.append(text.substr(pos, tokens[m].begin - pos));
     out.append(toString(modes[m]));
-    pos = modeTokens[m].end;
+    pos = tokens[m].end;
   }
   out.append(text.substr(pos));
   return out;

@@ -15,6 +15,12 @@ namespace meshtrace::viewer {
 // meshes (the file changed since it was loaded).
 std::string rewriteMeshModes(std::string_view text, const std::vector<Shading>& modes);
 
+// The shading word of each `mesh` entity, in order. Throws
+// std::runtime_error for text the scene reader would refuse in a way that
+// changes the count (an unknown keyword) and for a word other than FLAT or
+// PHONG.
+std::vector<Shading> meshModes(std::string_view text);
+
 // Reads `scene`, rewrites its modes and writes `out` (which may be `scene`)
 // through a temporary file. Throws std::runtime_error naming the file.
 void saveSceneWithModes(const std::filesystem::path& scene, const std::filesystem::path& out,

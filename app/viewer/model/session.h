@@ -1,15 +1,16 @@
 #pragma once
 // The scene being viewed and what the user changed about it: per-mesh
-// shading and visibility, and the camera. Hands the renderer an immutable
-// scene with the hidden meshes left out, rebuilt only when a mesh changes
-// (and shared with the session, not copied, while every mesh is shown).
+// shading and visibility, and the camera. The scene arrives from a
+// background load (geometry_load.h) and the renderer's scenes are made in
+// the background too (render_scene.h): the session only says what they
+// should be.
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "meshtrace/geometry/scene.h"
-#include "meshtrace/render/progressive.h"
+#include "viewer/model/geometry_load.h"
+#include "viewer/model/render_scene.h"
 
 namespace meshtrace::viewer {
 
@@ -18,22 +19,28 @@ struct MeshState {
   Shading fileShading = Shading::Flat;
   Shading shading = Shading::Flat;
   bool visible = true;
+  std::size_t triangles = 0, vertices = 0;
 };
 
 class SceneSession {
  public:
-  // Loads `file`; on failure keeps no scene and sets error() (with file:line
-  // for bad input). Never throws.
-  bool load(const std::filesystem::path& file);
+  // Forgets the current scene: `file` is being opened.
+  void beginOpening(const std::filesystem::path& file);
+  // The opening ended: with the loaded scene, or with an error (file:line
+  // for bad input).
+  void adopt(const LoadedScene& loaded);
+  void fail(const std::string& error);
   void clear();
 
-  bool loaded() const { return scene_ != nullptr; }
+  bool opening() const { return opening_; }
+  bool loaded() const { return base_ != nullptr; }
   const std::string& error() const { return error_; }
   const std::filesystem::path& file() const { return file_; }
   double loadMs() const { return loadMs_; }
-  // Every mesh, current modes. A change of shading may replace it: do not
-  // hold on to it across one.
-  const Scene& scene() const { return *scene_; }
+  // The scene as loaded: geometry, materials, lights. Its meshes' modes are
+  // not the current ones (see meshes()).
+  const Scene& scene() const { return *base_; }
+  const std::shared_ptr<const Scene>& sharedScene() const { return base_; }
 
   const std::vector<MeshState>& meshes() const { return meshes_; }
   void setShading(std::size_t mesh, Shading shading);
@@ -45,30 +52,27 @@ class SceneSession {
   void saveModes(const std::filesystem::path& out) const;
 
   const CameraSpec& camera() const { return camera_; }
-  void setCamera(const CameraSpec& camera) {
-    camera_ = camera;
-    ++revision_;
-  }
+  void setCamera(const CameraSpec& camera) { camera_ = camera; }
   void resetCamera();
 
-  // The scene to render (hidden meshes left out) with its intersector.
-  std::shared_ptr<const PreparedScene> prepared(const TraceOptions& options);
-  // The scene's mesh index for mesh `renderIndex` of the prepared scene.
-  std::uint32_t sceneMesh(std::uint32_t renderIndex) const { return renderToScene_[renderIndex]; }
-  // Counts a change that needs a new render (mesh or camera): compare to notice one.
-  std::uint64_t revision() const { return revision_; }
+  // What the renderer's scene should be now.
+  RenderRequest request(const TraceOptions& trace, std::uint64_t id) const;
+  // A render scene of every mesh: its scene (which holds the vertex
+  // normals of its PHONG meshes) becomes the base later requests start
+  // from, so that switching a mode back costs no copy.
+  void adoptBase(const RenderScene& scene);
+  // Counts changes of the meshes' modes and visibility.
+  std::uint64_t meshRevision() const { return meshRevision_; }
 
  private:
   std::filesystem::path file_;
   std::string error_;
+  bool opening_ = false;
   double loadMs_ = 0.0;
-  std::shared_ptr<Scene> scene_;
+  std::shared_ptr<const Scene> base_;
   std::vector<MeshState> meshes_;
   CameraSpec camera_;
-  std::shared_ptr<const PreparedScene> prepared_;
-  TraceOptions preparedOptions_;
-  std::vector<std::uint32_t> renderToScene_;
-  std::uint64_t revision_ = 0;
+  std::uint64_t meshRevision_ = 0;
 };
 
 }  // namespace meshtrace::viewer

@@ -1,5 +1,6 @@
 #include "viewer/model/views.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -52,6 +53,34 @@ double overlayValue(Overlay overlay, const PixelProbe& probe, const FalseColorSc
   return 0.0;
 }
 
+bool overlayCovers(Overlay overlay, const PixelProbe& probe) {
+  switch (overlay) {
+    case Overlay::BoxHits: return probe.boxHits > 0;
+    case Overlay::BvhCost: return probe.cost > 0;
+    case Overlay::None: break;
+  }
+  return false;
+}
+
+bool usesScales(View view, Overlay overlay) {
+  return view == View::Depth || view == View::BoxHits || view == View::BvhCost ||
+         overlay != Overlay::None;
+}
+
+double depthPosition(double depth, const FalseColorScales& s) {
+  const std::vector<double>& q = s.depthQuantiles;
+  if (q.size() < 2) {
+    const double span = s.depthFar - s.depthNear;
+    return span > 0.0 ? std::clamp((depth - s.depthNear) / span, 0.0, 1.0) : 0.0;
+  }
+  if (depth <= q.front()) return 0.0;
+  if (depth >= q.back()) return 1.0;
+  const std::size_t i =
+      std::upper_bound(q.begin(), q.end(), depth) - q.begin();  // q[i-1] <= d < q[i]
+  const double within = q[i] > q[i - 1] ? (depth - q[i - 1]) / (q[i] - q[i - 1]) : 0.0;
+  return (double(i - 1) + within) / double(q.size() - 1);
+}
+
 double deviationAt(const PixelProbe& probe, const FalseColorScales& scales) {
   if (!scales.scene || !probe.hit() || probe.kind != ObjectKind::Mesh ||
       probe.index >= scales.meshDeviation.size())
@@ -78,10 +107,7 @@ Color falseColor(View view, const PixelProbe& p, const FalseColorScales& s) {
   if (!p.hit()) return Color(kMissGrey);
   switch (view) {
     case View::Normals: return normalColor(Vec3(p.normal[0], p.normal[1], p.normal[2]));
-    case View::Depth:
-      // Logarithmic: a floor running to the horizon would flatten a linear scale.
-      return depthColor(std::log(p.depth), std::log(std::max(s.depthNear, 1e-12)),
-                        std::log(std::max(s.depthFar, 1e-12)));
+    case View::Depth: return depthColor(depthPosition(p.depth, s), 0.0, 1.0);
     case View::ObjectId: return idColor(static_cast<std::uint32_t>(p.object));
     case View::TriangleId:
       return p.kind == ObjectKind::Mesh ? idColor(p.triangle * 7919u + p.index) : Color(0.35);

@@ -37,9 +37,13 @@ bool needsProbes(View view);
 bool needsProbes(Overlay overlay);
 
 struct FalseColorScales {
-  double depthNear = 0.0, depthFar = 1.0;
-  double boxMax = 1.0;        // the number of meshes
-  double costMax = 1.0;       // the largest traversal cost seen
+  double depthNear = 0.0, depthFar = 1.0;  // robust percentiles of the hits (heat_scales.h)
+  // Depths at evenly spaced shares of the hits, from depthNear to depthFar:
+  // a depth is drawn by its share of hits nearer (an equalised scale, so
+  // that objects stand out of a floor that runs to the horizon).
+  std::vector<double> depthQuantiles;
+  double boxMax = 1.0;        // the most mesh boxes a primary ray meets
+  double costMax = 1.0;       // the largest traversal cost
   double deviationMax = 1.0;  // degrees at the top of the scale
   // Per mesh of the rendered scene, the deviation of each vertex normal from
   // OpenMesh's, in degrees (-1: not compared); null when not computed.
@@ -49,10 +53,18 @@ struct FalseColorScales {
 
 inline constexpr double kMissGrey = 0.12;
 
-// The colour of a pixel in a probe view; misses are dark grey.
+// The colour of a pixel in a probe view; misses are dark grey (in the
+// views of counts, a miss has its count like any ray).
 Color falseColor(View view, const PixelProbe& probe, const FalseColorScales& scales);
-// The heat colour of an overlay, and its value on [0, 1].
+// An overlay's value on [0, 1] (its heat colour's position), and whether it
+// covers the pixel at all: a count of zero leaves the image beneath clear.
 double overlayValue(Overlay overlay, const PixelProbe& probe, const FalseColorScales& scales);
+bool overlayCovers(Overlay overlay, const PixelProbe& probe);
+// Whether the view or the overlay is coloured by the measured ranges.
+bool usesScales(View view, Overlay overlay);
+
+// Where `depth` lies on the depth scale, 0 (near) to 1 (far).
+double depthPosition(double depth, const FalseColorScales& scales);
 
 // The deviation at a hit, interpolated over the triangle's corners; negative
 // when unknown.

@@ -36,13 +36,14 @@ class Waker {
   bool pending_ = false;
 };
 
-void printOpeningTimes(ViewerApp& app, const std::filesystem::path& scene) {
+// False if the scene did not open.
+bool printOpeningTimes(ViewerApp& app, const std::filesystem::path& scene) {
   const ViewerState& state = app.state();
   const ShownTimes& shown = app.display().shownTimes();
   const FrameStats& frames = state.timing.renderingFrames;
   if (!state.session.loaded()) {
     std::printf("%-28s %s\n", scene.filename().string().c_str(), state.session.error().c_str());
-    return;
+    return false;
   }
   std::printf(
       "%-28s load %6.1f ms  first image %6.1f ms  exact image %7.1f ms  "
@@ -50,6 +51,22 @@ void printOpeningTimes(ViewerApp& app, const std::filesystem::path& scene) {
       scene.filename().string().c_str(), state.timing.loadMs, shown.firstImageMs,
       shown.exactImageMs, frames.count(), formatMs(frames.longest()).c_str(),
       formatMs(frames.percentile(99.0)).c_str());
+  return true;
+}
+
+// --describe: the last frame's regions, then its text.
+bool writeDescription(ViewerApp& app, const std::string& path) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (!out) {
+    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+    return false;
+  }
+  for (const auto& [name, r] : app.state().regions)
+    std::fprintf(out, "region %s %.0f %.0f %.0f %.0f\n", name.c_str(), r[0], r[1], r[2], r[3]);
+  std::fprintf(out, "text\n%s\n", app.state().frameText.c_str());
+  const bool ok = std::fclose(out) == 0;
+  if (!ok) std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+  return ok;
 }
 }  // namespace
 
@@ -70,6 +87,7 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
     warmUp(options.width, options.height);
     Waker waker;
     ViewerApp app(options, executable, [&] { waker.wake(); });
+    app.captureText(!options.describe.empty());
     auto start = std::chrono::steady_clock::now();
     int settled = 0;
     FrameHost host;
@@ -99,12 +117,21 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
           start = std::chrono::steady_clock::now();
           settled = 0;
           runFrames(app, host);
-          printOpeningTimes(app, scene);
+          if (!printOpeningTimes(app, scene)) status = 1;
         }
     } else {
       runFrames(app, host);
-      drawFrame(app, options.width, options.height);
-      if (!saveFramebuffer(app, options.snapshot, options.width, options.height)) status = 1;
+      // A failure is an error and an exit code, never a picture of it: the
+      // output (an earlier snapshot, say) stays as it was.
+      const std::vector<std::string> failures = app.failures();
+      for (const std::string& f : failures) std::fprintf(stderr, "error: %s\n", f.c_str());
+      if (!failures.empty()) {
+        status = 1;
+      } else if (status == 0) {
+        drawFrame(app, options.width, options.height);
+        if (!saveFramebuffer(app, options.snapshot, options.width, options.height)) status = 1;
+        if (!options.describe.empty() && !writeDescription(app, options.describe)) status = 1;
+      }
     }
     if (options.stats) app.printStats();
   }

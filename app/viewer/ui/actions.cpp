@@ -16,28 +16,37 @@ void setMessage(ViewerState& state, const std::string& message, bool error) {
 
 void openScene(ViewerState& state, const std::filesystem::path& file) {
   state.timing.openedAt = state.timing.actionTime();
-  state.session.load(file);
+  state.session.beginOpening(file);
+  SceneRequests& scenes = state.scenes;
+  scenes.preview.reset();
+  scenes.render.reset();
+  scenes.failure.clear();
+  scenes.trace = state.trace;
+  scenes.pipeline->open(file, state.trace, ++scenes.lastId);
   state.hover.reset();
   state.pinned.reset();
-  state.crosschecks.assign(state.session.meshes().size(), std::nullopt);
-  state.timing.loadMs = state.session.loadMs();
+  state.observer.camera.reset();
+  state.inspections.entries.clear();
+  state.crosscheck.task->cancel();
+  state.crosscheck.reports.clear();
+  state.timing.loadMs = 0.0;
   state.timing.renderingFrames.clear();
   state.timing.frames = 0;
-  state.reference.path.clear();
-  state.reference.image = Image8{};
-  state.reference.error.clear();
-  state.reference.errorHistory.clear();
-  state.reference.current.reset();
-  state.reference.differenceFor = ~0ull;
-  if (const auto ref = findReference(file)) state.reference.path = *ref;
-  state.reference.pathField = state.reference.path.string();
+  ReferenceState& ref = state.reference;
+  ref.task->cancel();
+  ref.path.clear();
+  ref.image = Image8{};
+  ref.error.clear();
+  ref.errors.clear();
+  ref.current.reset();
+  if (const auto found = findReference(file)) ref.path = *found;
+  ref.pathField = ref.path.string();
   const std::string stem = file.stem().string();
   state.savePath = stem + "-render.png";
   state.screenshotPath = stem + "-window.png";
   state.sceneSavePath = (file.parent_path() / (stem + "-modes.sce")).string();
   // A load error shows in place of the image; the message line stays free.
   state.message.clear();
-  if (!state.session.loaded()) std::fprintf(stderr, "%s\n", state.session.error().c_str());
 }
 
 void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::string& title) {
@@ -77,12 +86,22 @@ std::optional<std::size_t> findMesh(const SceneSession& session, const std::stri
   return std::nullopt;
 }
 
+std::string meshNames(const SceneSession& session) {
+  if (session.meshes().empty()) return " (it has no meshes)";
+  std::string names;
+  for (std::size_t i = 0; i < session.meshes().size(); ++i)
+    names += (i ? ", " : "") + session.meshes()[i].name;
+  return " (its meshes: " + names + ")";
+}
+
 std::string describeObject(const ViewerState& state, const RenderDisplay& display,
                            const PrimitiveRef& ref) {
   std::string s = std::string(toString(ref.kind)) + " #" + std::to_string(ref.object);
-  if (ref.kind == ObjectKind::Mesh && display.prepared()) {
-    const std::uint32_t m = state.session.sceneMesh(ref.object);
-    s = "mesh '" + state.session.meshes()[m].name + "' #" + std::to_string(m);
+  const auto& scene = display.renderScene();
+  if (ref.kind == ObjectKind::Mesh && scene && ref.object < scene->sceneMesh.size()) {
+    const std::uint32_t m = scene->sceneMesh[ref.object];
+    if (m < state.session.meshes().size())
+      s = "mesh '" + state.session.meshes()[m].name + "' #" + std::to_string(m);
   }
   return s;
 }

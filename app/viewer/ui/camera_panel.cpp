@@ -15,7 +15,7 @@ void drawCameraPanel(ViewerState& state) {
   if (ImGui::Button("Print")) std::printf("%s\n", line.c_str());
   ImGui::SameLine();
   if (ImGui::Button("Reset camera")) state.session.resetCamera();
-  ImGui::TextDisabled("Left drag orbits, right drag pans, the wheel zooms.");
+  ImGui::TextDisabled("Left drag orbits, right drag pans, Shift + wheel moves closer.");
 }
 
 }  // namespace meshtrace::viewer

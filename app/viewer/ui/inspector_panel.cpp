@@ -1,5 +1,6 @@
 // The pixel inspector: everything inspectPixel records about the hovered
-// pixel (or the pinned one when the mouse is elsewhere).
+// pixel (or the pinned one when the mouse is elsewhere), through the main
+// camera.
 #include <imgui.h>
 
 #include "meshtrace/render/inspect.h"
@@ -8,12 +9,6 @@
 namespace meshtrace::viewer {
 
 namespace {
-struct Cache {
-  std::uint64_t job = 0;
-  PixelRef pixel;
-  std::optional<PixelInspection> inspection;
-};
-
 void vec(const char* label, const Vec3& v) {
   ImGui::Text("%-14s (%.5f, %.5f, %.5f)", label, v.x, v.y, v.z);
 }
@@ -99,21 +94,16 @@ void drawBounce(const ViewerState& state, const RenderDisplay& display, const Bo
 }  // namespace
 
 void drawInspectorPanel(ViewerState& state, RenderDisplay& display) {
-  static Cache cache;
-  const std::optional<PixelRef> pixel = state.hover ? state.hover : state.pinned;
-  if (!pixel || !display.prepared()) {
+  // From the observer camera the mouse is over another image: the pinned
+  // pixel only.
+  const std::optional<PixelRef> pixel =
+      state.hover && !state.observer.active ? state.hover : state.pinned;
+  const PixelInspection* inspection = pixel ? inspectionOf(state, display, *pixel) : nullptr;
+  if (!inspection) {
     ImGui::TextDisabled("Hover over the image to inspect a pixel; click to pin it.");
-    cache.inspection.reset();
     return;
   }
-  const std::uint64_t job = display.status().job;
-  if (!cache.inspection || cache.job != job || !(cache.pixel == *pixel)) {
-    cache.job = job;
-    cache.pixel = *pixel;
-    cache.inspection =
-        inspectPixel(display.prepared()->intersector(), display.camera(), pixel->x, pixel->y);
-  }
-  const PixelInspection& in = *cache.inspection;
+  const PixelInspection& in = *inspection;
   const bool pinned = state.pinned && *state.pinned == *pixel;
   ImGui::Text("pixel (%d, %d)%s  y = 0 is the bottom row", pixel->x, pixel->y,
               pinned ? " pinned" : "");

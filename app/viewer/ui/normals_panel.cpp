@@ -8,28 +8,40 @@
 
 namespace meshtrace::viewer {
 
-void runCrossCheck(ViewerState& state) {
+void startCrossCheck(ViewerState& state) {
   if (!state.session.loaded()) return;
-  const auto start = std::chrono::steady_clock::now();
-  const auto& meshes = state.session.scene().meshes;
-  state.crosschecks.assign(meshes.size(), std::nullopt);
-  for (std::size_t i = 0; i < meshes.size(); ++i)
-    state.crosschecks[i] = crosscheck::crossCheckNormals(meshes[i], 5);
-  state.crosscheckMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // The scene as loaded: its meshes' own normals are computed where they
+  // lack them (crossCheckNormals), off the UI thread.
+  const std::shared_ptr<const Scene> scene = state.session.sharedScene();
+  state.crosscheck.task->start(
+      [scene](TaskContext<CrossCheckState::Result>& task) {
+        const auto start = std::chrono::steady_clock::now();
+        CrossCheckState::Result r;
+        r.reports.assign(scene->meshes.size(), std::nullopt);
+        for (std::size_t i = 0; i < scene->meshes.size(); ++i) {
+          if (task.cancelled()) return;
+          task.setPhase("checking " + scene->meshes[i].file().filename().string());
+          r.reports[i] = crosscheck::crossCheckNormals(scene->meshes[i], 5);
+        }
+        r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                   .count();
+        task.publish(std::move(r));
+      },
+      "checking the normals against OpenMesh");
 }
 
 FalseColorScales deviationScales(const ViewerState& state, const RenderDisplay& display) {
   FalseColorScales s;
   s.deviationMax = 0.0;
-  if (!display.prepared()) return s;
-  const std::size_t renderMeshes = display.prepared()->scene().meshes.size();
-  s.meshDeviation.assign(renderMeshes, nullptr);
-  for (std::uint32_t i = 0; i < renderMeshes; ++i) {
-    const std::uint32_t m = state.session.sceneMesh(i);
-    if (m < state.crosschecks.size() && state.crosschecks[m]) {
-      s.meshDeviation[i] = &state.crosschecks[m]->perVertexDegrees;
-      s.deviationMax = std::max(s.deviationMax, state.crosschecks[m]->maxDegrees);
+  const auto& scene = display.renderScene();
+  if (!scene) return s;
+  const auto& reports = state.crosscheck.reports;
+  s.meshDeviation.assign(scene->sceneMesh.size(), nullptr);
+  for (std::size_t i = 0; i < scene->sceneMesh.size(); ++i) {
+    const std::uint32_t m = scene->sceneMesh[i];
+    if (m < reports.size() && reports[m]) {
+      s.meshDeviation[i] = &reports[m]->perVertexDegrees;
+      s.deviationMax = std::max(s.deviationMax, reports[m]->maxDegrees);
     }
   }
   // A scale that starts at a visible size: agreement to 1e-12 degrees should look uniform.
@@ -37,25 +49,26 @@ FalseColorScales deviationScales(const ViewerState& state, const RenderDisplay& 
   return s;
 }
 
-void drawNormalsPanel(ViewerState& state, RenderDisplay& display) {
+void drawNormalsPanel(ViewerState& state, RenderDisplay&) {
   if (!state.session.loaded()) return;
   if (state.session.meshes().empty()) {
     ImGui::TextDisabled("No meshes.");
     return;
   }
-  const bool have = !state.crosschecks.empty() && state.crosschecks[0].has_value();
-  if (ImGui::Button(have ? "Run again" : "Cross-check normals")) {
-    runCrossCheck(state);
-    display.invalidate();
+  CrossCheckState& check = state.crosscheck;
+  if (check.task->busy()) {
+    ImGui::Text("%s ...", check.task->phase().c_str());
+    return;
   }
-  if (!have) return;
+  if (ImGui::Button(check.done() ? "Run again" : "Cross-check normals")) startCrossCheck(state);
+  if (!check.done()) return;
   if (!state.options.hideTimings) {
     ImGui::SameLine();
-    ImGui::Text("%.1f ms", state.crosscheckMs);
+    ImGui::Text("%.1f ms", check.ms);
   }
   ImGui::TextDisabled("Angle-weighted normals through OpenMesh's half-edges.");
-  for (std::size_t i = 0; i < state.crosschecks.size(); ++i) {
-    const auto& r = state.crosschecks[i];
+  for (std::size_t i = 0; i < check.reports.size(); ++i) {
+    const auto& r = check.reports[i];
     if (!r) continue;
     ImGui::PushID(static_cast<int>(i));
     ImGui::Text("%s: max %.3g deg, mean %.3g deg over %zu vertices",

@@ -44,9 +44,7 @@ void drawObjectsPanel(ViewerState& state) {
         session.setShading(i, m.shading == Shading::Flat ? Shading::Phong : Shading::Flat);
       if (changed) ImGui::PopStyleColor();
       ImGui::TableNextColumn();
-      // Asked for again: the toggle above may have replaced the scene.
-      const Mesh& mesh = session.scene().meshes[i];
-      ImGui::Text("%zu / %zu", mesh.triangles().size(), mesh.vertices().size());
+      ImGui::Text("%zu / %zu", m.triangles, m.vertices);
       ImGui::PopID();
     }
     ImGui::EndTable();

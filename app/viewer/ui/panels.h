@@ -2,11 +2,16 @@
 // The viewer's panels, each drawn by one function into the current ImGui
 // window, and the actions they share.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "viewer/model/projection.h"
 #include "viewer/ui/render_display.h"
 #include "viewer/ui/state.h"
+
+struct ImDrawList;
+struct ImVec2;
 
 namespace meshtrace::viewer {
 
@@ -21,6 +26,8 @@ void setMessage(ViewerState& state, const std::string& message, bool error);
 void copyCameraLine(ViewerState& state);
 // A mesh named by the command line: its name (file stem) or index.
 std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name);
+// " (its meshes: ball, box)", for a message about a mesh name not found.
+std::string meshNames(const SceneSession& session);
 // "mesh 'ring1' #0", "sphere #3": what a primitive is, for people.
 std::string describeObject(const ViewerState& state, const RenderDisplay& display,
                            const PrimitiveRef& ref);
@@ -34,17 +41,50 @@ void drawCameraPanel(ViewerState& state);                             // camera_
 void drawNormalsPanel(ViewerState& state, RenderDisplay& display);    // normals_panel.cpp
 void drawComparePanel(ViewerState& state, RenderDisplay& display);    // compare_panel.cpp
 void drawSavePanel(ViewerState& state, RenderDisplay& display);       // save_panel.cpp
+void drawDrawPanel(ViewerState& state, RenderDisplay& display);       // draw_panel.cpp
+void drawAbPanel(ViewerState& state, RenderDisplay& display);         // ab_panel.cpp
 
-// The colour scale of a heat map, 0 to `maxValue` (legend.cpp).
-void drawHeatLegend(const char* title, double maxValue, const char* unit);
+// A/B (ab_panel.cpp): keeps the current colour image as B (false if there
+// is none); compares each finished render with B in the background.
+bool keepAsB(ViewerState& state, RenderDisplay& display);
+void updateAb(ViewerState& state, RenderDisplay& display);
 
-// Cross-checks every mesh of the scene against OpenMesh (normals_panel.cpp)
-// and hands the deviations to the display's scales.
-void runCrossCheck(ViewerState& state);
+// The debugger's findings over the image, through the shown image's camera
+// (findings.cpp); `toScreen` places an image position in the window.
+void drawFindings(ViewerState& state, RenderDisplay& display, ImDrawList* draw,
+                  const std::function<ImVec2(const ImagePoint&)>& toScreen);
+// The inspection of `pixel` through the main camera, kept while the scene
+// and the camera stay; null while the render scene is not built.
+const PixelInspection* inspectionOf(ViewerState& state, const RenderDisplay& display,
+                                    const PixelRef& pixel);
+
+// Legends (legend.cpp): a colour bar over [0, 1] and numbers at places on it.
+struct LegendTick {
+  double position;  // 0..1 along the bar
+  std::string label;
+};
+void drawLegend(ViewerState& state, const char* title, const std::function<Color(double)>& colorAt,
+                const std::vector<LegendTick>& ticks);
+// A heat map's scale, 0 to `maxValue`; a count's shows each whole number
+// when there are few.
+void drawHeatLegend(ViewerState& state, const char* title, double maxValue, const char* unit,
+                    bool counts = false);
+// The depth view's scale: the depths at a quarter, half ... of the hits.
+void drawDepthLegend(ViewerState& state, const FalseColorScales& scales);
+// The compare panel's plot of each pass's error (error_plot.cpp).
+void drawErrorPlot(ViewerState& state, const std::vector<PassError>& points);
+
+// Starts the cross-check of every mesh of the scene against OpenMesh in
+// the background (normals_panel.cpp); deviationScales hands its results to
+// the display's scales.
+void startCrossCheck(ViewerState& state);
 FalseColorScales deviationScales(const ViewerState& state, const RenderDisplay& display);
 
+// Reads the reference image at state.reference.path (an error goes to
+// state.reference.error) and makes its texture (compare_panel.cpp).
+void loadReference(ViewerState& state);
 // Keeps the reference image, its texture, the difference image and the
-// error history current (compare_panel.cpp).
+// error of each pass current, comparing in the background.
 void updateReference(ViewerState& state, RenderDisplay& display);
 
 }  // namespace meshtrace::viewer

@@ -10,7 +10,8 @@
 #include "meshtrace/io/image.h"
 #include "meshtrace/render/progressive.h"
 #include "viewer/gl/texture.h"
-#include "viewer/model/session.h"
+#include "viewer/model/heat_scales.h"
+#include "viewer/model/render_scene.h"
 #include "viewer/model/views.h"
 #include "viewer/ui/view_textures.h"
 
@@ -20,7 +21,6 @@ struct RenderWish {
   View view = View::Color;
   Overlay overlay = Overlay::None;
   int extraSamples = 0;
-  TraceOptions trace;
 };
 
 // How long after the user asked for the current render (opened the scene,
@@ -40,10 +40,14 @@ class RenderDisplay {
   // whole render is done; the passes between show with the next frame.
   RenderDisplay(int threads, int workerNice, std::function<void()> wake = {});
 
-  // Starts a new render if the session or the wish changed since the last
-  // call; returns true if it did. `requestedAt`: when the user asked for
-  // what changed, the start of the figures in shownTimes().
-  bool sync(SceneSession& session, const RenderWish& wish, Clock::time_point requestedAt);
+  // Starts a new render if the scene, the camera or the wish changed since
+  // the last call (a null scene stops the render); returns true if it did.
+  // `requestedAt`: when the user asked for what changed, the start of the
+  // figures in shownTimes(); a render that follows a preview asked for at
+  // the same moment keeps the preview's first image time.
+  bool sync(std::shared_ptr<const RenderScene> scene, const CameraSpec& camera,
+            const RenderWish& wish, Clock::time_point requestedAt);
+  // Stops the render and forgets its image.
   void stop();
   // While the UI thread builds and draws a frame, one render thread waits
   // (when the threads fill the cores): the frame gets a core of its own
@@ -61,14 +65,25 @@ class RenderDisplay {
   const gl::Texture& overlay() const { return textures_.overlay(); }
   const ProgressiveFrame& frame() const { return frame_; }
   ProgressiveStatus status() const { return renderer_.status(); }
+  // The status taken just before the last update(): the frame holds at
+  // least what it says is done.
+  const ProgressiveStatus& frameStatus() const { return frameStatus_; }
+  // The textures hold an image of the current scene (its first image
+  // reached them): false from stop() until then, so that an opening scene
+  // never shows the last one's picture.
+  bool showsImage() const { return showsImage_; }
   const ShownTimes& shownTimes() const { return shown_; }
   // A render runs whose coarse pass has not reached the texture yet.
-  bool awaitingFirstImage() const { return prepared_ && shown_.firstImageMs < 0; }
+  bool awaitingFirstImage() const { return scene_ && shown_.firstImageMs < 0; }
   // The render has reached its first or its exact image, and the texture
   // not yet: worth a frame at once.
   bool imageWaiting() const;
-  bool active() const { return prepared_ != nullptr; }
-  const std::shared_ptr<const PreparedScene>& prepared() const { return prepared_; }
+  bool active() const { return scene_ != nullptr; }
+  // The scene of the current render, or null.
+  const PreparedScene* prepared() const { return scene_ ? scene_->prepared.get() : nullptr; }
+  const std::shared_ptr<const RenderScene>& renderScene() const { return scene_; }
+  // Every tile the render has published is in the textures.
+  bool texturesCurrent() const { return textures_.current(); }
   const Camera& camera() const { return camera_; }
   const FalseColorScales& scales() const { return scales_; }
   const RenderWish& wish() const { return wish_; }
@@ -79,26 +94,24 @@ class RenderDisplay {
   Image8 colorImage() const;
 
  private:
-  // Widens the depth and cost ranges by `tiles`; true if the current view
-  // or overlay colours by a range that changed.
-  bool trackScales(const std::vector<int>& tiles);
   void timeShownImages();
 
   ProgressiveRenderer renderer_;
   int coreForFrames_ = 0;  // workers paused during a frame
   ProgressiveFrame frame_;
-  std::shared_ptr<const PreparedScene> prepared_;
+  ProgressiveStatus frameStatus_;
+  bool showsImage_ = false;
+  std::shared_ptr<const RenderScene> scene_;
   Camera camera_;
-  std::uint64_t revision_ = ~0ull;
   RenderWish wish_;
   Clock::time_point requestedAt_;
   ShownTimes shown_;
   bool started_ = false;
   bool dirtyAll_ = true;
   FalseColorScales scales_;
-  // The ranges changed since the traced tiles were coloured: recolour them
-  // all, at most every kRescaleEvery while the render runs.
-  bool rescalePending_ = false;
+  // The ranges are measured as tiles arrive and applied at most every
+  // kRescaleEvery while the render runs; a change recolours every tile.
+  ScaleTracker tracker_;
   Clock::time_point lastRescale_{};
   ViewTextures textures_;
 };

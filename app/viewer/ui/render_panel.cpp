@@ -16,6 +16,16 @@ std::string ms(const ViewerState& state, double v) {
 std::string ms(const ViewerState& state, std::optional<double> v) {
   return state.options.hideTimings ? "-" : formatMs(v);
 }
+
+// A combo of an option's values, named as the command line names them.
+template <typename Value>
+void choose(const char* title, Value& value, std::initializer_list<Value> values) {
+  ImGui::SetNextItemWidth(200);
+  if (!ImGui::BeginCombo(title, toString(value))) return;
+  for (Value v : values)
+    if (ImGui::Selectable(toString(v), v == value)) value = v;
+  ImGui::EndCombo();
+}
 }  // namespace
 
 void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
@@ -70,16 +80,28 @@ void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
   }
   ImGui::SetNextItemWidth(200);
   ImGui::SliderInt("AA samples", &state.extraSamples, 0, 16);
+  // As raytrace's --triangle, --precision and --accel: each makes a new
+  // render scene in the background.
+  TraceOptions& trace = state.trace;
+  choose("triangle test", trace.triangle.test,
+         {TriangleTest::Watertight, TriangleTest::Cramer, TriangleTest::MollerTrumbore});
+  choose("precision", trace.triangle.precision, {Precision::Double, Precision::Single});
+  choose("acceleration", trace.accel,
+         {AccelMethod::Bvh, AccelMethod::BoundingBox, AccelMethod::None});
   const FalseColorScales& scales = display.scales();
   const bool boxes = state.view == View::BoxHits || state.overlay == Overlay::BoxHits;
   const bool cost = state.view == View::BvhCost || state.overlay == Overlay::BvhCost;
-  if (boxes) drawHeatLegend("mesh boxes the primary ray meets", scales.boxMax, "boxes");
+  if (boxes)
+    drawHeatLegend(state, "mesh boxes the primary ray meets (most in the image)", scales.boxMax,
+                   "boxes", true);
   if (cost)
-    drawHeatLegend("nodes + boxes + primitives tested (primary ray)", scales.costMax, "tests");
+    drawHeatLegend(state, "nodes + boxes + primitives tested (primary ray)", scales.costMax,
+                   "tests");
+  if (state.overlay != Overlay::None)
+    ImGui::TextDisabled("The overlay leaves pixels with a count of 0 clear.");
   if (state.view == View::NormalDeviation)
-    drawHeatLegend("vertex normal vs OpenMesh, interpolated", scales.deviationMax, "deg");
-  if (state.view == View::Depth && scales.depthNear >= 0)
-    ImGui::Text("depth: white %.3g to dark %.3g (log scale)", scales.depthNear, scales.depthFar);
+    drawHeatLegend(state, "vertex normal vs OpenMesh, interpolated", scales.deviationMax, "deg");
+  if (state.view == View::Depth) drawDepthLegend(state, scales);
 }
 
 }  // namespace meshtrace::viewer

@@ -1,9 +1,13 @@
 #pragma once
-// What the viewer's panels share: the options, the scene session, the scene
-// list, the view settings, the inspector's pixel, the cross-check results,
-// the reference image and the messages to show.
+// What the viewer's panels share: the options, the scene session and the
+// work in the background for it, the scene list, the view settings, the
+// inspector's pixel, the cross-check results, the reference image and the
+// messages to show.
+#include <array>
 #include <chrono>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,10 +15,15 @@
 #include "crosscheck/normals_crosscheck.h"
 #include "meshtrace/report/image_compare.h"
 #include "viewer/gl/texture.h"
+#include "viewer/model/ab_compare.h"
+#include "viewer/model/background_task.h"
 #include "viewer/model/folder_browser.h"
 #include "viewer/model/frame_stats.h"
+#include "viewer/model/image_viewport.h"
 #include "viewer/model/options.h"
+#include "viewer/model/pass_errors.h"
 #include "viewer/model/scene_catalog.h"
+#include "viewer/model/scene_pipeline.h"
 #include "viewer/model/session.h"
 #include "viewer/model/views.h"
 #include "viewer/ui/render_display.h"
@@ -26,19 +35,81 @@ struct PixelRef {
   bool operator==(const PixelRef&) const = default;
 };
 
+// The renderer's scenes, made in the background (scene_pipeline.h): the
+// latest request, and what arrived for it.
+struct SceneRequests {
+  std::unique_ptr<ScenePipeline> pipeline;
+  std::uint64_t lastId = 0;            // the request whose answer is shown
+  std::uint64_t meshRevision = ~0ull;  // the session's when it was asked
+  TraceOptions trace;                  // and the trace options
+  std::shared_ptr<const RenderScene> preview, render;
+  std::string failure;  // why the latest render scene could not be made
+};
+
+// The OpenMesh cross-check of every mesh, made in the background.
+struct CrossCheckState {
+  using Reports = std::vector<std::optional<crosscheck::NormalsReport>>;
+  struct Result {
+    Reports reports;  // per scene mesh
+    double ms = 0.0;
+  };
+  std::unique_ptr<BackgroundTask<Result>> task;
+  Reports reports;
+  double ms = 0.0;
+  bool done() const { return !reports.empty() && reports[0].has_value(); }
+};
+
 struct ReferenceState {
   std::filesystem::path path;  // empty: none
   std::string pathField;
   std::string error;
   Image8 image;
   gl::Texture texture, difference;
-  std::vector<std::uint8_t> differenceRgba;
-  std::uint64_t differenceFor = ~0ull;  // tile versions summed, to notice changes
-  std::vector<float> errorHistory;      // RMSE every 100 ms of the current render
-  std::uint64_t historyJob = 0;
-  double lastSampleMs = -1.0;
+  PassErrors errors;  // the current render's, per pass (pass_errors.h)
+  std::unique_ptr<BackgroundTask<PassErrors::Comparison>> task;
   std::optional<ImageDifference> current;
   bool panelOpen = false;  // the compare panel was drawn last frame
+};
+
+// The BVH cut drawn over the image, kept while its scene, level and depth
+// stay (findings.cpp).
+struct CutCache {
+  const PreparedScene* scene = nullptr;
+  BvhLevel level = BvhLevel::Triangles;
+  int depth = -1;
+  BvhCut cut;
+};
+
+// Inspections of pixels through the main camera, kept while the render
+// scene and the camera stay: the hovered and the pinned pixel's.
+struct InspectionCache {
+  struct Entry {
+    const PreparedScene* scene = nullptr;
+    CameraSpec camera;
+    PixelRef pixel;
+    PixelInspection inspection;
+  };
+  std::vector<Entry> entries;
+};
+
+// The observer camera (observer.h): shown instead of the main one while
+// active; placed when first shown for a scene.
+struct ObserverState {
+  bool active = false;
+  std::optional<CameraSpec> camera;
+};
+
+// A/B (ab_compare.h): the render kept as B and its comparison with the
+// current one, made in the background.
+struct AbState {
+  std::optional<KeptImage> b;
+  gl::Texture texture, difference;
+  AbMode mode = AbMode::A;
+  float wipe = 0.5f;  // the share of the image's width, from the left, that shows A
+  bool draggingWipe = false;
+  std::unique_ptr<BackgroundTask<AbComparison>> task;
+  std::optional<ImageDifference> stats;  // A against B, for the job below
+  std::uint64_t comparedJob = 0;         // the A render compared, or being compared
 };
 
 struct TimingStats {
@@ -46,7 +117,8 @@ struct TimingStats {
   // When the input of the frame being built was taken: what the user does in
   // it was asked for then. Unset between frames (a drop arrives there).
   std::optional<Clock::time_point> frameInputAt;
-  std::optional<Clock::time_point> openedAt;  // a scene was opened, its render not started yet
+  // A scene was opened, its (full, not preview) render not started yet.
+  std::optional<Clock::time_point> openedAt;
   double loadMs = 0.0;
   FrameStats renderingFrames;  // frames drawn while a render ran, since the scene was opened
   int frames = 0;
@@ -58,6 +130,7 @@ struct ViewerState {
   ViewerOptions options;
   std::filesystem::path executable;
   SceneSession session;
+  SceneRequests scenes;
   std::vector<SceneFolder> folders;
   std::string pathField;
   std::optional<FolderBrowser> browser;  // open while shown
@@ -69,17 +142,30 @@ struct ViewerState {
   TraceOptions trace;
 
   std::optional<PixelRef> hover, pinned;
+  ImageViewport viewport;
+  DrawOptions draw;
+  CutCache cut;
+  InspectionCache inspections;
+  ObserverState observer;
 
-  // Per scene mesh, the OpenMesh cross-check (computed on demand).
-  std::vector<std::optional<crosscheck::NormalsReport>> crosschecks;
-  double crosscheckMs = 0.0;
-
+  CrossCheckState crosscheck;
   ReferenceState reference;
+  AbState ab;
   TimingStats timing;
   std::string savePath, screenshotPath, sceneSavePath;
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn
   std::string message;            // last action's result
   bool messageIsError = false;
+  // The command line's settings that apply to the scene (meshes, pixel,
+  // reference) wait for it to load; what they name that it lacks is listed
+  // here (a headless run then fails).
+  bool sceneOptionsPending = false;
+  bool depthCheckPending = false;
+  std::vector<std::string> optionErrors;
+  // Where this frame drew its image, plot and legends (x0, y0, x1, y1 in
+  // window pixels), and the text it showed: what --describe writes.
+  std::map<std::string, std::array<float, 4>> regions;
+  std::string frameText;
 };
 
 }  // namespace meshtrace::viewer

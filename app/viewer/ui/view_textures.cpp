@@ -67,7 +67,8 @@ void ViewTextures::colorTile(const ProgressiveFrame& frame, int t, View view, Ov
       const PixelProbe* p = frame.probeAt(bc, br);
       std::uint8_t viewColor[4] = {0, 0, 0, 0}, heat[4] = {0, 0, 0, 0};
       if (p && probeView) putColor(viewColor, falseColor(view, *p, scales));
-      if (p && withOverlay) putColor(heat, heatColor(overlayValue(overlay, *p, scales)));
+      if (p && withOverlay && overlayCovers(overlay, *p))
+        putColor(heat, heatColor(overlayValue(overlay, *p, scales)));
       const std::uint8_t* rgba = frame.rgbaAt(bc, br);
       if (rgba && !probeView) std::copy(rgba, rgba + 4, viewColor);
       const bool viewDone = !probeView && frame.tileStep[t] == 1;

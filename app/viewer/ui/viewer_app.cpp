@@ -1,9 +1,11 @@
 #include "viewer/ui/viewer_app.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the log's buffer
 
 #include <algorithm>
 
+#include "viewer/model/observer.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -37,11 +39,15 @@ double msSince(ViewerApp::Clock::time_point t) {
 
 ViewerApp::ViewerApp(const ViewerOptions& options, const std::filesystem::path& executable,
                      std::function<void()> wake)
-    : display_(options.threads, options.workerNice, std::move(wake)) {
+    : display_(options.threads, options.workerNice, wake) {
   state_.options = options;
   state_.executable = executable;
+  state_.scenes.pipeline = std::make_unique<ScenePipeline>(wake);
+  state_.crosscheck.task = std::make_unique<BackgroundTask<CrossCheckState::Result>>(wake);
+  state_.reference.task = std::make_unique<BackgroundTask<PassErrors::Comparison>>(wake);
+  state_.ab.task = std::make_unique<BackgroundTask<AbComparison>>(wake);
   applyOptions();
-  sync();  // start rendering now, not after the first frame's GL set-up
+  sync();  // start loading now, not after the first frame's GL set-up
 }
 
 void ViewerApp::applyOptions() {
@@ -50,11 +56,8 @@ void ViewerApp::applyOptions() {
   state_.overlay = o.overlay;
   state_.opacity = static_cast<float>(o.overlayOpacity);
   state_.extraSamples = o.extraSamples;
-  try {
-    state_.trace.accel = parseAccelMethod(o.accel);
-  } catch (const std::invalid_argument& e) {
-    setMessage(state_, e.what(), true);
-  }
+  state_.trace = o.trace;
+  state_.draw = o.draw;
   if (!o.noDefaultDirs)
     for (const auto& [root, title] : defaultSceneRoots(state_.executable))
       addFolder(state_, root, title);
@@ -64,23 +67,109 @@ void ViewerApp::applyOptions() {
   if (o.noDefaultDirs)
     addFolder(state_, std::filesystem::path(o.scene).parent_path(), "this scene's folder");
   openScene(state_, o.scene);
-  for (const auto& [mesh, mode] : o.shading) {
-    if (const auto i = findMesh(state_.session, mesh))
-      state_.session.setShading(*i, mode);
-    else
-      setMessage(state_, "--shading: no mesh '" + mesh + "'", true);
+  state_.sceneOptionsPending = true;
+  state_.depthCheckPending = o.draw.cut && o.depthGiven;
+}
+
+void ViewerApp::applySceneOptions() {
+  state_.sceneOptionsPending = false;
+  const ViewerOptions& o = state_.options;
+  // With A/B from the command line, B's settings come first (advanceAbSetup).
+  applyShading("--shading", o.shading);
+  if (o.keepB()) {
+    applyShading("--b-shading", o.bShading);
+    if (o.bTrace) state_.trace = *o.bTrace;
+    abStage_ = AbStage::RenderingB;
   }
   for (const std::string& mesh : o.hide) {
     if (const auto i = findMesh(state_.session, mesh))
       state_.session.setVisible(*i, false);
     else
-      setMessage(state_, "--hide: no mesh '" + mesh + "'", true);
+      refuse("--hide: the scene has no mesh '" + mesh + "'" + meshNames(state_.session));
   }
-  if (o.pin) state_.pinned = PixelRef{o.pin->first, o.pin->second};
+  if (o.pin) {
+    const CameraSpec& c = state_.session.camera();
+    const auto [x, y] = *o.pin;
+    if (x < 0 || y < 0 || x >= c.width || y >= c.height)
+      refuse("--pin " + std::to_string(x) + "," + std::to_string(y) + ": the image is " +
+             std::to_string(c.width) + "x" + std::to_string(c.height) + " (x 0.." +
+             std::to_string(c.width - 1) + ", y 0.." + std::to_string(c.height - 1) + ")");
+    else
+      state_.pinned = PixelRef{x, y};
+  }
+  if (o.observer) {
+    state_.observer.active = true;
+    state_.observer.camera = observerCamera(state_.session.camera(), state_.session.scene());
+  }
+  if (o.zoom) {
+    const CameraSpec& c = state_.session.camera();
+    // About the pinned pixel's centre (storage rows count from the top).
+    const double col = state_.pinned ? state_.pinned->x + 0.5 : c.width / 2.0;
+    const double row =
+        state_.pinned ? flippedRow(state_.pinned->y, c.height) + 0.5 : c.height / 2.0;
+    state_.viewport.zoomTo(*o.zoom, col, row);
+  }
   if (!o.reference.empty()) {
     state_.reference.path = o.reference;
     state_.reference.pathField = o.reference;
+    loadReference(state_);
+    if (!state_.reference.error.empty()) refuse("--reference: " + state_.reference.error);
   }
+}
+
+void ViewerApp::applyShading(const char* option,
+                             const std::vector<std::pair<std::string, Shading>>& modes) {
+  for (const auto& [mesh, mode] : modes) {
+    if (const auto i = findMesh(state_.session, mesh))
+      state_.session.setShading(*i, mode);
+    else
+      refuse(std::string(option) + ": the scene has no mesh '" + mesh + "'" +
+             meshNames(state_.session));
+  }
+}
+
+void ViewerApp::advanceAbSetup() {
+  if (abStage_ != AbStage::RenderingB || !state_.session.loaded()) return;
+  const SceneRequests& scenes = state_.scenes;
+  const ProgressiveStatus s = display_.status();
+  if (scenes.pipeline->busy() || !scenes.render || display_.renderScene() != scenes.render ||
+      !s.finished || display_.frame().job != s.job || !display_.texturesCurrent())
+    return;
+  abStage_ = AbStage::Done;
+  if (!keepAsB(state_, display_)) {
+    refuse("--b-*: the colour image is not rendered in the " + std::string(label(state_.view)) +
+           " view: nothing to keep as B");
+    return;
+  }
+  // Now A: the command line's own settings.
+  const ViewerOptions& o = state_.options;
+  for (std::size_t i = 0; i < state_.session.meshes().size(); ++i)
+    state_.session.setShading(i, state_.session.meshes()[i].fileShading);
+  applyShading("--shading", o.shading);
+  state_.trace = o.trace;
+  state_.ab.mode = o.abMode;
+  state_.ab.wipe = o.wipe;
+}
+
+void ViewerApp::checkBvhDepth() {
+  state_.depthCheckPending = false;
+  const DrawOptions& d = state_.options.draw;
+  const BvhCut root = bvhCut(state_.scenes.render->prepared->intersector(), d.level, 0, 1);
+  std::string problem;
+  if (root.boxes.empty())
+    problem = std::string("--draw cut: the scene has no ") + toString(d.level) + " BVH";
+  else if (d.depth > root.levelDepth)
+    problem = "--bvh-depth " + std::to_string(d.depth) + ": the " + toString(d.level) +
+              " BVH's deepest nodes are at depth " + std::to_string(root.levelDepth);
+  if (!problem.empty()) refuse(problem);
+}
+
+void ViewerApp::refuse(const std::string& problem) {
+  state_.optionErrors.push_back(problem);
+  state_.message = problem;
+  state_.messageIsError = true;
+  // Headless, failures() reports these once at the end.
+  if (!state_.options.headless) std::fprintf(stderr, "%s\n", problem.c_str());
 }
 
 RenderWish ViewerApp::wish() const {
@@ -88,19 +177,88 @@ RenderWish ViewerApp::wish() const {
   w.view = state_.view;
   w.overlay = state_.overlay;
   w.extraSamples = state_.extraSamples;
-  w.trace = state_.trace;
   return w;
 }
 
+void ViewerApp::receive() {
+  SceneRequests& scenes = state_.scenes;
+  for (Arrival& a : scenes.pipeline->take()) {
+    if (!a.error.empty()) {
+      state_.session.fail(a.error);
+      if (!state_.options.headless) std::fprintf(stderr, "error: %s\n", a.error.c_str());
+      scenes.preview.reset();
+      scenes.render.reset();
+      display_.stop();
+      state_.sceneOptionsPending = false;
+      continue;
+    }
+    if (a.loaded) {
+      state_.session.adopt(*a.loaded);
+      scenes.meshRevision = state_.session.meshRevision();
+      state_.timing.loadMs = a.loaded->ms;
+      state_.crosscheck.reports.assign(state_.session.meshes().size(), std::nullopt);
+      if (state_.sceneOptionsPending) applySceneOptions();
+    }
+    if (a.preview && !scenes.render) scenes.preview = a.preview;
+    if (a.render && a.render->request == scenes.lastId) {
+      scenes.render = a.render;
+      scenes.preview.reset();
+      state_.session.adoptBase(*a.render);
+      if (state_.depthCheckPending) checkBvhDepth();
+    }
+  }
+  const std::string failed = scenes.pipeline->error();
+  if (!failed.empty() && failed != scenes.failure) {
+    scenes.failure = failed;
+    setMessage(state_, "could not prepare the scene: " + failed, true);
+  }
+}
+
+void ViewerApp::requestRenderScene() {
+  SceneRequests& scenes = state_.scenes;
+  const SceneSession& session = state_.session;
+  if (!session.loaded()) return;
+  if (session.meshRevision() == scenes.meshRevision && sameTrace(state_.trace, scenes.trace))
+    return;
+  scenes.meshRevision = session.meshRevision();
+  scenes.trace = state_.trace;
+  scenes.failure.clear();
+  scenes.pipeline->prepare(session.request(state_.trace, ++scenes.lastId));
+}
+
+void ViewerApp::runBackgroundWork() {
+  CrossCheckState& check = state_.crosscheck;
+  for (CrossCheckState::Result& r : check.task->take()) {
+    check.reports = std::move(r.reports);
+    check.ms = r.ms;
+    display_.invalidate();
+  }
+  if (state_.view == View::NormalDeviation && state_.session.loaded() &&
+      !state_.session.meshes().empty() && !check.done() && !check.task->busy())
+    startCrossCheck(state_);
+  updateReference(state_, display_);
+  updateAb(state_, display_);
+}
+
 void ViewerApp::sync() {
+  receive();
+  requestRenderScene();
   TimingStats& t = state_.timing;
+  const SceneRequests& scenes = state_.scenes;
   // The render of a scene just opened was asked for when it was opened,
   // before its load; any other render, by this frame's input.
   const Clock::time_point requestedAt = t.openedAt.value_or(t.actionTime());
-  const bool started = display_.sync(state_.session, wish(), requestedAt);
-  if (started) openingJobAt_.reset();
-  if (started && t.openedAt) openingJobAt_ = t.openedAt;
-  if (started || !state_.session.loaded()) t.openedAt.reset();
+  const std::shared_ptr<const RenderScene> scene = scenes.render ? scenes.render : scenes.preview;
+  const ObserverState& observer = state_.observer;
+  const CameraSpec& camera =
+      observer.active && observer.camera ? *observer.camera : state_.session.camera();
+  const bool started =
+      display_.sync(state_.session.loaded() ? scene : nullptr, camera, wish(), requestedAt);
+  if (started) openingJobAt_ = t.openedAt;
+  // The opening ends with the full render's start (a preview's is not it).
+  if ((started && scene && !scene->preview) ||
+      (!state_.session.loaded() && !state_.session.opening()))
+    t.openedAt.reset();
 }
 
 void ViewerApp::frame(Clock::time_point inputAt) {
@@ -113,23 +271,23 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   else
     ++framesSinceInput_;
   sync();
-  if (state_.view == View::NormalDeviation && state_.session.loaded() &&
-      !state_.session.meshes().empty() && (state_.crosschecks.empty() || !state_.crosschecks[0])) {
-    runCrossCheck(state_);
-    display_.invalidate();
-  }
   display_.update(deviationScales(state_, display_));
-  updateReference(state_, display_);
+  runBackgroundWork();
+  advanceAbSetup();
+  state_.regions.clear();
+  state_.frameText.clear();
 
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const float leftWidth = std::clamp(0.22f * size.x, 230.0f, 320.0f);
   const float rightWidth = std::clamp(0.32f * size.x, 330.0f, 440.0f);
   placeWindow(0, leftWidth);
   ImGui::Begin("Scenes", nullptr, kPanelFlags);
+  beginCapture();
   drawScenePanel(state_);
   ImGui::Separator();
   ImGui::TextUnformatted("Objects");
   drawObjectsPanel(state_);
+  endCapture();
   ImGui::End();
 
   placeWindow(leftWidth, size.x - leftWidth - rightWidth);
@@ -138,6 +296,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
                                      : state_.session.file().filename().string()) +
       "###image";
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar);
+  beginCapture();
   if (!state_.message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, state_.messageIsError ? ImVec4(1, 0.45f, 0.45f, 1)
                                                                : ImVec4(0.6f, 1, 0.6f, 1));
@@ -145,22 +304,41 @@ void ViewerApp::frame(Clock::time_point inputAt) {
     ImGui::PopStyleColor();
   }
   drawImageView(state_, display_);
+  endCapture();
   ImGui::End();
 
   placeWindow(size.x - rightWidth, rightWidth);
   ImGui::Begin("Details", nullptr, kPanelFlags);
+  beginCapture();
   const ViewerOptions& o = state_.options;
   if (section("Render", true)) drawRenderPanel(state_, display_);
+  if (section("Draw over the image", wanted(o, "draw"))) drawDrawPanel(state_, display_);
   if (section("Inspector", true)) drawInspectorPanel(state_, display_);
+  if (section("A/B", wanted(o, "ab"))) drawAbPanel(state_, display_);
   if (section("Camera", wanted(o, "camera"))) drawCameraPanel(state_);
   if (section("Normals vs OpenMesh", wanted(o, "normals"))) drawNormalsPanel(state_, display_);
   state_.reference.panelOpen = section("Compare with a reference", wanted(o, "compare"));
   if (state_.reference.panelOpen) drawComparePanel(state_, display_);
   if (section("Save", wanted(o, "save"))) drawSavePanel(state_, display_);
+  endCapture();
   ImGui::End();
   // A change made in this frame restarts the render now, not next frame.
   sync();
   state_.timing.frameInputAt.reset();
+}
+
+// ImGui's log records the text of every widget drawn in the window until
+// LogFinish (End would finish it too); depth 0 opens no closed tree node.
+// To the clipboard: Debian's 1.86 records nothing logging to its buffer.
+void ViewerApp::beginCapture() {
+  if (captureText_) ImGui::LogToClipboard(0);
+}
+
+void ViewerApp::endCapture() {
+  if (!captureText_) return;
+  state_.frameText += GImGui->LogBuffer.c_str();
+  state_.frameText += '\n';
+  ImGui::LogFinish();
 }
 
 bool ViewerApp::waitingForOpeningImage() const {
@@ -184,9 +362,25 @@ void ViewerApp::drop(const std::vector<std::string>& paths) {
 }
 
 bool ViewerApp::idle() const {
-  if (!state_.session.loaded()) return true;
+  const SceneRequests& scenes = state_.scenes;
+  if (abStage_ == AbStage::RenderingB && state_.session.loaded() && scenes.failure.empty())
+    return false;
+  if (state_.session.opening() || scenes.pipeline->busy() || state_.crosscheck.task->busy() ||
+      state_.reference.task->busy() || state_.ab.task->busy())
+    return false;
+  if (!state_.session.loaded() || !scenes.failure.empty()) return true;
+  if (!scenes.render || display_.renderScene() != scenes.render) return false;
   const ProgressiveStatus s = display_.status();
-  return s.finished && display_.frame().job == s.job;
+  return s.finished && display_.frame().job == s.job && display_.texturesCurrent();
+}
+
+std::vector<std::string> ViewerApp::failures() const {
+  std::vector<std::string> out;
+  if (!state_.session.error().empty()) out.push_back(state_.session.error());
+  if (!state_.scenes.failure.empty())
+    out.push_back("could not prepare the scene: " + state_.scenes.failure);
+  out.insert(out.end(), state_.optionErrors.begin(), state_.optionErrors.end());
+  return out;
 }
 
 double ViewerApp::waitBeforeNextFrameMs(Clock::time_point lastFrameInput) const {

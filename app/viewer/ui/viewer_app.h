@@ -37,20 +37,33 @@ class ViewerApp {
   // as drawn while rendering.
   bool frameDone(double ms);
   void drop(const std::vector<std::string>& paths);
+  // What a frame does before it draws: takes in the background work's
+  // results and starts the render they allow. For tests, without ImGui.
+  void poll() { sync(); }
 
-  // True when a scene is shown and its render (with the AA samples asked
-  // for) is complete, or when there is nothing to render.
+  // True when nothing more will change without input: the scene is shown
+  // and its render (with the AA samples asked for) is complete and in the
+  // textures, no work runs in the background; or a scene failed to load;
+  // or there is no scene.
   bool idle() const;
+  // Why a headless run must fail: the scene did not load, the command line
+  // named a mesh, pixel or reference the scene lacks, or a render scene
+  // could not be made. Empty if nothing went wrong.
+  std::vector<std::string> failures() const;
   // How long the platform may wait for input before the next frame, given
   // when the last frame took its input (input during the wait ends it at
   // once): not at all when the render has an image the texture lacks (its
   // first or its exact one); until the first image when a scene was just
   // opened; a 60th of a second for kFramesAfterInput frames after input
   // (what a click changes shows a frame later); a 10th while the render
-  // runs unattended (each frame costs the render a core for its duration,
-  // and the first and the exact image end the wait anyway); a 4th when idle.
+  // runs unattended or work goes on in the background (each frame costs
+  // the render a core for its duration, and the first and the exact image
+  // and the background work's results end the wait anyway); a 4th when
+  // idle.
   double waitBeforeNextFrameMs(Clock::time_point lastFrameInput) const;
   std::string takeScreenshotRequest();
+  // Keep the text each frame shows in state().frameText (for --describe).
+  void captureText(bool on) { captureText_ = on; }
   void printStats() const;
 
   ViewerState& state() { return state_; }
@@ -61,7 +74,26 @@ class ViewerApp {
 
  private:
   void applyOptions();
+  // Applies the command line's settings that name parts of the scene, once
+  // it has loaded; what they name that it lacks goes to optionErrors.
+  void applySceneOptions();
+  // --bvh-depth names a depth the scene's BVH has (once it is built).
+  void checkBvhDepth();
+  // A setting of the command line the scene lacks: a message, and a
+  // failure of a headless run.
+  void refuse(const std::string& problem);
+  // --shading and --b-shading: MESH=MODE for each mesh named.
+  void applyShading(const char* option, const std::vector<std::pair<std::string, Shading>>& modes);
+  // A/B from the command line: once B's render is complete, keeps it and
+  // turns to A's settings.
+  void advanceAbSetup();
+  // Takes in what the background work finished, and starts what is due.
+  void receive();
+  void requestRenderScene();
+  void runBackgroundWork();
   void sync();
+  void beginCapture();
+  void endCapture();
   // A scene was just opened (less than kOpeningWaitMs ago) and its first
   // image is not in the texture yet.
   bool waitingForOpeningImage() const;
@@ -70,6 +102,9 @@ class ViewerApp {
   ViewerState state_;
   RenderDisplay display_;
   int framesSinceInput_ = 0;
+  enum class AbStage { None, RenderingB, Done };
+  AbStage abStage_ = AbStage::None;
+  bool captureText_ = false;
   bool renderingAtFrameStart_ = false;
   // The current render was started by opening its scene, at this time.
   std::optional<Clock::time_point> openingJobAt_;

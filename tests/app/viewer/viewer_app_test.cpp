@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <chrono>
 #include <fstream>
+#include <thread>
 
 #include "meshtrace/io/scene_parser.h"
 #include "support/paths.h"
@@ -29,11 +31,20 @@ ViewerOptions bareOptions() {
   return o;
 }
 
+// Until the background work (opening a scene, making its render scene)
+// has ended, as frames would wait for it.
+void settle(ViewerApp& app) {
+  for (int i = 0; i < 6000 && app.state().scenes.pipeline->busy(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  app.poll();
+}
+
 // GLFW hands the drop callback C strings; the same function serves it here.
 void drop(ViewerApp& app, const std::vector<std::string>& paths) {
   std::vector<const char*> c;
   for (const std::string& p : paths) c.push_back(p.c_str());
   dropPaths(app, static_cast<int>(c.size()), c.data());
+  settle(app);
 }
 
 TEST(Drop, OpensASceneAndAddsAFolder) {
@@ -155,6 +166,7 @@ TEST(FrameStats, ARenderThatEndsBeforeTheFirstFrameShowsNoLongestFrame) {
   ViewerOptions options = bareOptions();
   options.scene = (testScenes() / "viewer_test.sce").string();
   ViewerApp app(options, "viewer");
+  settle(app);
   ASSERT_TRUE(app.display().waitUntilFinished(60000));
   // The first frame comes after the render: it was not drawn while rendering.
   EXPECT_FALSE(app.frameDone(12.0));

@@ -4,10 +4,15 @@
 #include <fstream>
 
 #include "meshtrace/io/scene_parser.h"
+#include "meshtrace/render/render.h"
+#include "support/bad_inputs.h"
+#include "support/files.h"
 #include "support/paths.h"
 #include "viewer/model/camera_control.h"
+#include "viewer/model/geometry_load.h"
 #include "viewer/model/options.h"
 #include "viewer/model/reference_lookup.h"
+#include "viewer/model/render_scene.h"
 #include "viewer/model/scene_catalog.h"
 #include "viewer/model/scene_writer.h"
 #include "viewer/model/session.h"
@@ -33,26 +38,49 @@ TEST(SceneWriter, ChangesOnlyTheShadingWords) {
   EXPECT_THROW(rewriteMeshModes(text, {Shading::Flat}), std::runtime_error);
 }
 
+// The render scene of the session's current request, made as the
+// background work makes it.
+std::shared_ptr<RenderScene> renderSceneOf(const SceneSession& session, std::uint64_t id = 1) {
+  return makeRenderScene(
+      session.request(TraceOptions{}, id), [](std::string) {}, [] { return false; });
+}
+
 TEST(Session, ShadingVisibilityResetAndSave) {
   SceneSession session;
-  ASSERT_TRUE(session.load(testScene())) << session.error();
+  session.beginOpening(testScene());
+  EXPECT_TRUE(session.opening());
+  EXPECT_FALSE(session.loaded());
+  const LoadedScene loaded = loadGeometry(testScene());
+  session.adopt(loaded);
+  EXPECT_FALSE(session.opening());
   ASSERT_EQ(session.meshes().size(), 2u);
   EXPECT_EQ(session.meshes()[0].name, "ball");
   EXPECT_EQ(session.meshes()[0].shading, Shading::Phong);
-  const std::uint64_t r0 = session.revision();
-  const auto all = session.prepared(TraceOptions{});
-  EXPECT_EQ(all->scene().meshes.size(), 2u);
-  EXPECT_EQ(session.prepared(TraceOptions{}), all) << "unchanged scene: reused";
+  EXPECT_EQ(session.meshes()[0].triangles, 80u);
+  EXPECT_EQ(loaded.scene->meshes[0].shading(), Shading::Flat) << "read FLAT, PHONG later";
+  EXPECT_TRUE(loaded.scene->meshes[0].vertexNormals().empty());
+  const auto all = renderSceneOf(session);
+  ASSERT_EQ(all->prepared->scene().meshes.size(), 2u);
+  EXPECT_TRUE(all->prepared->built());
+  EXPECT_EQ(all->prepared->scene().meshes[0].shading(), Shading::Phong);
+  EXPECT_FALSE(all->prepared->scene().meshes[0].vertexNormals().empty());
+  EXPECT_TRUE(all->allVisible);
+  session.adoptBase(*all);
+  EXPECT_EQ(renderSceneOf(session)->prepared->sharedScene(), all->prepared->sharedScene())
+      << "the file's modes on the adopted base: nothing copied";
 
+  const std::uint64_t r0 = session.meshRevision();
   session.setShading(0, Shading::Flat);
   session.setVisible(1, false);
-  EXPECT_GT(session.revision(), r0);
+  EXPECT_GT(session.meshRevision(), r0);
   EXPECT_TRUE(session.meshesChanged());
-  const auto some = session.prepared(TraceOptions{});
-  ASSERT_EQ(some->scene().meshes.size(), 1u);
-  EXPECT_EQ(some->scene().meshes[0].shading(), Shading::Flat);
-  EXPECT_EQ(session.sceneMesh(0), 0u);
-  EXPECT_EQ(all->scene().meshes[0].shading(), Shading::Phong)
+  const auto some = renderSceneOf(session, 2);
+  EXPECT_EQ(some->request, 2u);
+  ASSERT_EQ(some->prepared->scene().meshes.size(), 1u);
+  EXPECT_EQ(some->prepared->scene().meshes[0].shading(), Shading::Flat);
+  EXPECT_EQ(some->sceneMesh, std::vector<std::uint32_t>{0});
+  EXPECT_FALSE(some->allVisible);
+  EXPECT_EQ(all->prepared->scene().meshes[0].shading(), Shading::Phong)
       << "the old render scene never changes";
 
   const fs::path out = testScene().parent_path() / "viewer_test-saved-by-test.sce";
@@ -64,17 +92,45 @@ TEST(Session, ShadingVisibilityResetAndSave) {
 
   session.resetMeshes();
   EXPECT_FALSE(session.meshesChanged());
-  EXPECT_EQ(session.prepared(TraceOptions{})->scene().meshes.size(), 2u);
+  EXPECT_EQ(renderSceneOf(session)->prepared->scene().meshes.size(), 2u);
 }
 
-TEST(Session, BadSceneGivesTheErrorWithFileAndLine) {
-  SceneSession session;
-  EXPECT_FALSE(session.load(test::sourceDir() / "tests/app/viewer/scenes/broken.sce"));
-  EXPECT_FALSE(session.loaded());
-  EXPECT_NE(session.error().find("broken.sce:5"), std::string::npos) << session.error();
-  EXPECT_EQ(session.prepared(TraceOptions{}), nullptr);
-  EXPECT_FALSE(session.load(test::sourceDir() / "no/such/scene.sce"));
-  EXPECT_FALSE(session.error().empty());
+TEST(GeometryLoad, RefusesBadInputWithLoadScenesOwnMessage) {
+  // Read in two stages, a scene must fail exactly as loadScene fails.
+  for (const test::BadInput& input : test::badInputs()) {
+    const auto dir = test::scratchDir() / input.name;
+    fs::create_directories(dir);
+    if (!input.scene.empty()) test::writeFile(dir / "bad.sce", input.scene);
+    if (!input.mesh.empty()) test::writeFile(dir / "mesh.off", input.mesh);
+    fs::create_directories(dir / "folder.off");
+    std::string expected, got;
+    try {
+      loadScene(dir / "bad.sce");
+    } catch (const std::exception& e) {
+      expected = e.what();
+    }
+    try {
+      loadGeometry(dir / "bad.sce");
+    } catch (const std::exception& e) {
+      got = e.what();
+    }
+    EXPECT_FALSE(got.empty()) << input.name;
+    EXPECT_EQ(got, expected) << input.name;
+  }
+}
+
+TEST(GeometryLoad, TheRenderSceneOfTheFilesModesRendersAsLoadSceneDoes) {
+  std::vector<fs::path> scenes{testScene(),
+                               test::sourceDir() / "scenes/shading_modes/shading_phong.sce"};
+  for (const fs::path& file : scenes) {
+    SceneSession session;
+    session.adopt(loadGeometry(file));
+    const auto staged = renderSceneOf(session);
+    const Scene direct = loadScene(file);
+    const Image8 a = quantize(render(staged->prepared->scene(), {}));
+    const Image8 b = quantize(render(direct, {}));
+    EXPECT_EQ(a.rgb, b.rgb) << file;
+  }
 }
 
 TEST(CameraControl, OrbitKeepsDistancePanMovesBothZoomApproaches) {

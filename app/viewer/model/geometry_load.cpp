@@ -1,0 +1,61 @@
+#include "viewer/model/geometry_load.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
+#include "meshtrace/io/scene_parser.h"
+#include "viewer/model/scene_writer.h"
+
+namespace meshtrace::viewer {
+
+namespace {
+// Larger scene files are left to loadScene, which knows its limits.
+constexpr std::uintmax_t kMaxStagedBytes = std::uintmax_t{16} << 20;
+
+// The file's text and its mesh modes, when this reader can tell them: for
+// anything else (a missing or huge file, words it does not know) loadScene
+// reads the file and reports what is wrong in its own words.
+bool readStaged(const std::filesystem::path& file, std::string& text, std::vector<Shading>& modes) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxStagedBytes || !std::filesystem::is_regular_file(file, ec)) return false;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  text = buffer.str();
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) return false;
+  try {
+    modes = meshModes(text);
+  } catch (const std::runtime_error&) {
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+LoadedScene loadGeometry(const std::filesystem::path& file) {
+  const auto start = std::chrono::steady_clock::now();
+  LoadedScene out;
+  std::string text;
+  if (readStaged(file, text, out.fileModes)) {
+    // The shading words rewritten in place: lines, and so the messages of
+    // bad input, stay those of the file.
+    const std::vector<Shading> flat(out.fileModes.size(), Shading::Flat);
+    out.scene = std::make_shared<const Scene>(parseScene(rewriteMeshModes(text, flat), file));
+  } else {
+    auto scene = std::make_shared<Scene>(loadScene(file));
+    out.fileModes.clear();
+    for (Mesh& m : scene->meshes) {
+      out.fileModes.push_back(m.shading());
+      m.setShading(Shading::Flat);
+    }
+    out.scene = std::move(scene);
+  }
+  out.ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace meshtrace::viewer

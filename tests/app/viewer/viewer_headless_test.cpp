@@ -1,0 +1,107 @@
+// A headless run never hides a failure: a scene that does not load, a
+// command line naming a mesh, pixel, reference, view, panel or BVH depth
+// the scene lacks end with a message and a non-zero exit, and the output
+// (an earlier snapshot, say) is left as it was.
+#include <gtest/gtest.h>
+
+#include "support/bad_inputs.h"
+#include "support/cli.h"
+#include "support/files.h"
+#include "support/paths.h"
+
+namespace meshtrace {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path viewerTool() { return MESHTRACE_VIEWER; }
+
+std::vector<std::string> headless(const fs::path& dir, std::vector<std::string> args) {
+  std::vector<std::string> all{
+      "--headless", "--no-default-dirs",        "--threads",  "2",
+      "--snapshot", (dir / "out.png").string(), "--describe", (dir / "out.txt").string()};
+  all.insert(all.end(), args.begin(), args.end());
+  return all;
+}
+
+class ViewerBadInput : public ::testing::TestWithParam<test::BadInput> {};
+
+TEST_P(ViewerBadInput, ExitsWithTheErrorAndLeavesTheOutput) {
+  const test::BadInput& input = GetParam();
+  const auto dir = test::scratchDir();
+  if (!input.scene.empty()) test::writeFile(dir / "bad.sce", input.scene);
+  if (!input.mesh.empty()) test::writeFile(dir / "mesh.off", input.mesh);
+  fs::create_directory(dir / "folder.off");
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  test::expectRefusal(viewerTool(), headless(dir, {(dir / "bad.sce").string()}), dir,
+                      input.mentions, dir / "out.png");
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, ViewerBadInput, ::testing::ValuesIn(test::badInputs()),
+                         [](const auto& info) { return info.param.name; });
+
+// The test scene in a scratch folder beside an existing out.png.
+fs::path sceneCopy() {
+  const auto dir = test::scratchDir();
+  for (const char* f : {"viewer_test.sce", "ball.off", "box.off"})
+    fs::copy_file(test::sourceDir() / "tests/app/viewer/scenes" / f, dir / f);
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  return dir;
+}
+
+struct Refusal {
+  std::string name;
+  std::vector<std::string> args;
+  std::vector<std::string> mentions;
+  int exitCode = 1;  // 2: the command line itself is wrong
+};
+
+class ViewerRefusal : public ::testing::TestWithParam<Refusal> {};
+
+TEST_P(ViewerRefusal, SaysWhatTheSceneLacksAndLeavesTheOutput) {
+  const Refusal& r = GetParam();
+  const auto dir = sceneCopy();
+  std::vector<std::string> args = r.args;
+  args.push_back((dir / "viewer_test.sce").string());
+  if (r.exitCode == 1) {
+    test::expectRefusal(viewerTool(), headless(dir, args), dir, r.mentions, dir / "out.png");
+    return;
+  }
+  const test::ToolResult result = test::runTool(viewerTool(), headless(dir, args), dir);
+  EXPECT_TRUE(result.exited && result.exitCode == r.exitCode) << test::describe(result);
+  for (const std::string& m : r.mentions)
+    EXPECT_NE(result.err.find(m), std::string::npos) << m << "\n" << test::describe(result);
+  EXPECT_EQ(test::readFileBytes(dir / "out.png"), test::kOldOutput);
+  EXPECT_FALSE(fs::exists(dir / "out.txt"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Options, ViewerRefusal,
+    ::testing::Values(
+        Refusal{"NoSuchMeshToShade", {"--shading", "nope=FLAT"}, {"nope", "ball, box"}},
+        Refusal{"NoSuchMeshToHide", {"--hide", "7"}, {"--hide", "'7'"}},
+        Refusal{"PinPastTheRightEdge", {"--pin", "240,5"}, {"--pin 240,5", "240x160"}},
+        Refusal{"PinAboveTheTop", {"--pin", "5,160"}, {"--pin 5,160", "y 0..159"}},
+        Refusal{"PinLeftOfTheImage", {"--pin", "-1,3"}, {"--pin -1,3"}},
+        Refusal{"NoSuchReference", {"--reference", "missing.png"}, {"--reference", "missing.png"}},
+        Refusal{"BvhDepthPastTheDeepestNode",
+                {"--draw", "cut", "--bvh-depth", "40"},
+                {"--bvh-depth 40", "deepest"}},
+        Refusal{"NoSuchView", {"--view", "nope"}, {"view 'nope'"}, 2},
+        Refusal{"NoSuchOverlay", {"--overlay", "nope"}, {"overlay 'nope'"}, 2},
+        Refusal{"NoSuchPanel", {"--open", "nope"}, {"panel 'nope'", "compare"}, 2},
+        Refusal{"NothingToDrawByThatName", {"--draw", "nope"}, {"'nope'"}, 2},
+        Refusal{"NoSuchTriangleTest", {"--triangle", "nope"}, {"nope"}, 2},
+        Refusal{"ZoomOutOfRange", {"--zoom", "100"}, {"--zoom"}, 2}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(ViewerHeadless, WritesTheSnapshotWhenAllIsWell) {
+  const auto dir = sceneCopy();
+  test::expectSuccess(viewerTool(),
+                      headless(dir, {"--pin", "88,109", (dir / "viewer_test.sce").string()}), dir);
+  EXPECT_NE(test::readFileBytes(dir / "out.png"), test::kOldOutput);
+  EXPECT_NE(test::readFileBytes(dir / "out.txt").find("pixel (88, 109) pinned"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace meshtrace
