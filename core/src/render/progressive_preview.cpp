@@ -6,42 +6,33 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <memory>
 
 #include "accel/primitive_query.h"
 
 namespace meshtrace {
 
 namespace {
-// A cell per two triangles: on a surface mesh most cells are empty and the
-// others hold tens of triangles, few enough for a coarse pass, and the
-// tables stay small. Capped for the same reason.
-constexpr double kCellsPerTriangle = 0.5;
+// Triangles per chunk; a mesh in no order of its surface gets 1.
+constexpr std::uint32_t kChunkTriangles = 16;
+// About a cell per chunk: most cells of a surface's grid are empty, the
+// others hold a few chunks.
+constexpr double kCellsPerChunk = 1.0;
 constexpr double kMaxCells = double(1 << 22);
 constexpr int kMaxResolution = 512;
-// A triangle whose box overlaps many cells is listed in each: should the
-// triangles over several cells need this many entries per triangle (a few
-// huge triangles over a fine grid), the grid is made coarser.
-constexpr std::size_t kMaxRefsPerTriangle = 16;
-constexpr std::size_t kGrain = 4096;
-constexpr std::uint32_t kSeveralCells = 0xffffffffu;
+// Chunks over more cells than this on average are spread out: their
+// triangles are not in surface order (chunks of one follow), or huge (a
+// coarser grid follows).
+constexpr double kMaxEntriesPerChunk = 8.0;
+constexpr std::size_t kGrain = 1024;
 
-template <typename Fn>
-void forEachTriangle(const Scene& scene, const Fn& fn) {
-  for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
-    const Mesh& mesh = scene.meshes[m];
-    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(
-                          0, static_cast<std::uint32_t>(mesh.triangles().size()), kGrain),
-                      [&](const tbb::blocked_range<std::uint32_t>& r) {
-                        for (std::uint32_t t = r.begin(); t < r.end(); ++t) fn(m, t);
-                      });
-  }
+// The float just below (or above) a double: a box rounded outward.
+float down(double v) {
+  const float f = static_cast<float>(v);
+  return double(f) <= v ? f : std::nextafter(f, -INFINITY);
 }
-
-Aabb triangleBox(const Mesh& mesh, std::uint32_t t) {
-  Aabb box;
-  for (std::uint32_t v : mesh.triangles()[t]) box.extend(mesh.vertices()[v]);
-  return box;
+float up(double v) {
+  const float f = static_cast<float>(v);
+  return double(f) >= v ? f : std::nextafter(f, INFINITY);
 }
 }  // namespace
 
@@ -49,85 +40,103 @@ PreviewGrid::PreviewGrid(const Scene& scene, TriangleKernel kernel)
     : scene_(scene), kernel_(kernel) {
   std::size_t triangles = 0;
   for (const Mesh& m : scene.meshes) {
-    if (m.triangles().empty()) continue;
-    bounds_.extend(m.bounds());
+    if (!m.triangles().empty()) bounds_.extend(m.bounds());
     triangles += m.triangles().size();
   }
   if (triangles == 0) return;
+  if (build(kChunkTriangles, kCellsPerChunk * double(triangles) / kChunkTriangles)) return;
+  // Single triangles, on a coarser grid while some span too many cells.
+  for (double cells = kCellsPerChunk * double(triangles); !build(1, cells); cells /= 8.0) {
+  }
+}
+
+bool PreviewGrid::build(std::uint32_t size, double cellsWanted) {
+  // The chunks, mesh by mesh, and their boxes (one pass over the triangles).
+  std::vector<Chunk> chunks;
+  for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
+    const auto n = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
+    for (std::uint32_t first = 0; first < n; first += size)
+      chunks.push_back({m, first, std::min(size, n - first), {}, {}});
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        Chunk& c = chunks[i];
+                        const Mesh& mesh = scene_.meshes[c.mesh];
+                        Aabb box;
+                        for (std::uint32_t t = c.first; t < c.first + c.count; ++t)
+                          for (std::uint32_t v : mesh.triangles()[t])
+                            box.extend(mesh.vertices()[v]);
+                        for (int a = 0; a < 3; ++a) {
+                          c.lo[a] = down(box.min[a]);
+                          c.hi[a] = up(box.max[a]);
+                        }
+                      }
+                    });
+  const auto boxOf = [](const Chunk& c) {
+    return Aabb{Vec3(c.lo[0], c.lo[1], c.lo[2]), Vec3(c.hi[0], c.hi[1], c.hi[2])};
+  };
   const Vec3 extent = bounds_.extent();
   // A flat mesh still gets cells of a sensible shape along its thin axis.
   const double largest = std::max({extent.x, extent.y, extent.z, 1e-300});
   const Vec3 sides = glm::max(extent, Vec3(largest * 1e-3));
-  double cells = std::min(kMaxCells, kCellsPerTriangle * double(triangles));
-  // Per triangle of each mesh, the one cell it lies in, or kSeveralCells.
-  std::vector<std::vector<std::uint32_t>> only(scene.meshes.size());
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m)
-    only[m].resize(scene.meshes[m].triangles().size());
-  for (;;) {
-    const double side = std::cbrt(sides.x * sides.y * sides.z / cells);
-    std::size_t total = 1;
-    for (int a = 0; a < 3; ++a) {
-      res_[a] = std::clamp(static_cast<int>(std::ceil(sides[a] / side)), 1, kMaxResolution);
-      cellSize_[a] = extent[a] > 0.0 ? extent[a] / res_[a] : 1.0;
-      inverseCell_[a] = 1.0 / cellSize_[a];
-      total *= static_cast<std::size_t>(res_[a]);
-    }
-    std::vector<std::atomic<std::uint32_t>> count(total);
-    // Most triangles lie in one cell: the first pass notes which, so the
-    // second fills those without reading their vertices again.
-    std::atomic<std::size_t> spanning{0};
-    forEachTriangle(scene, [&](std::uint32_t m, std::uint32_t t) {
-      int lo[3], hi[3];
-      cellRange(triangleBox(scene.meshes[m], t), lo, hi);
-      if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {
-        const std::size_t c = cellIndex(lo[0], lo[1], lo[2]);
-        only[m][t] = static_cast<std::uint32_t>(c);
-        count[c].fetch_add(1, std::memory_order_relaxed);
-        return;
-      }
-      only[m][t] = kSeveralCells;
-      std::size_t n = 0;
-      for (int z = lo[2]; z <= hi[2]; ++z)
-        for (int y = lo[1]; y <= hi[1]; ++y)
-          for (int x = lo[0]; x <= hi[0]; ++x, ++n)
-            count[cellIndex(x, y, z)].fetch_add(1, std::memory_order_relaxed);
-      spanning.fetch_add(n, std::memory_order_relaxed);
-    });
-    if (spanning.load() > kMaxRefsPerTriangle * triangles && cells > 1.0) {
-      cells = std::max(1.0, cells / 8.0);
-      continue;
-    }
-    std::size_t refs = 0;
-    cellStart_.resize(total + 1);
-    for (std::size_t c = 0; c < total; ++c) {
-      cellStart_[c] = static_cast<std::uint32_t>(refs);
-      refs += count[c].load(std::memory_order_relaxed);
-      // The second pass writes each triangle into its cells through a
-      // cursor per cell (the order inside a cell does not matter: ties go
-      // by primitive, primitive_query.h).
-      count[c].store(cellStart_[c], std::memory_order_relaxed);
-    }
-    cellStart_[total] = static_cast<std::uint32_t>(refs);
-    refs_.resize(refs);
-    forEachTriangle(scene, [&](std::uint32_t m, std::uint32_t t) {
-      if (only[m][t] != kSeveralCells) {
-        refs_[count[only[m][t]].fetch_add(1, std::memory_order_relaxed)] = {m, t};
-        return;
-      }
-      int lo[3], hi[3];
-      cellRange(triangleBox(scene.meshes[m], t), lo, hi);
-      for (int z = lo[2]; z <= hi[2]; ++z)
-        for (int y = lo[1]; y <= hi[1]; ++y)
-          for (int x = lo[0]; x <= hi[0]; ++x)
-            refs_[count[cellIndex(x, y, z)].fetch_add(1, std::memory_order_relaxed)] = {m, t};
-    });
-    return;
+  const double cells = std::clamp(cellsWanted, 1.0, kMaxCells);
+  const double side = std::cbrt(sides.x * sides.y * sides.z / cells);
+  std::size_t total = 1;
+  for (int a = 0; a < 3; ++a) {
+    res_[a] = std::clamp(static_cast<int>(std::ceil(sides[a] / side)), 1, kMaxResolution);
+    cellSize_[a] = extent[a] > 0.0 ? extent[a] / res_[a] : 1.0;
+    inverseCell_[a] = 1.0 / cellSize_[a];
+    total *= static_cast<std::size_t>(res_[a]);
   }
+  // Count, then fill each cell through a cursor of its own (the order in a
+  // cell does not matter: ties go by primitive, primitive_query.h).
+  std::vector<std::atomic<std::uint32_t>> count(total);
+  std::atomic<std::size_t> entries{0};
+  const auto forEachCell = [&](const Chunk& c, const auto& fn) {
+    int lo[3], hi[3];
+    cellRange(boxOf(c), lo, hi);
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) fn(cellIndex(x, y, z));
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::size_t n = 0;
+                      for (std::size_t i = r.begin(); i < r.end(); ++i)
+                        forEachCell(chunks[i], [&](std::size_t cell) {
+                          count[cell].fetch_add(1, std::memory_order_relaxed);
+                          ++n;
+                        });
+                      entries.fetch_add(n, std::memory_order_relaxed);
+                    });
+  if (cells > 1.0 && double(entries.load()) > kMaxEntriesPerChunk * double(chunks.size()))
+    return false;
+  cellStart_.resize(total + 1);
+  std::uint32_t at = 0;
+  for (std::size_t c = 0; c < total; ++c) {
+    cellStart_[c] = at;
+    at += count[c].load(std::memory_order_relaxed);
+    count[c].store(cellStart_[c], std::memory_order_relaxed);
+  }
+  cellStart_[total] = at;
+  refs_.resize(at);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i)
+                        forEachCell(chunks[i], [&](std::size_t cell) {
+                          refs_[count[cell].fetch_add(1, std::memory_order_relaxed)] =
+                              static_cast<std::uint32_t>(i);
+                        });
+                    });
+  chunks_ = std::move(chunks);
+  chunkSize_ = size;
+  return true;
 }
 
 void PreviewGrid::cellRange(const Aabb& box, int lo[3], int hi[3]) const {
-  // A little slack: a triangle on a cell boundary is listed on both sides.
-  // The positions are >= -slack, so truncation is the floor after the max.
+  // A little slack: a box on a cell boundary is listed on both sides. The
+  // positions are >= -slack, so truncation is the floor after the max.
   constexpr double kSlack = 1e-9;
   for (int a = 0; a < 3; ++a) {
     const double l = std::max(0.0, (box.min[a] - bounds_.min[a]) * inverseCell_[a] - kSlack);
@@ -147,9 +156,9 @@ bool PreviewGrid::trace(Search& search, Counters& counters) const {
     if (search.shape(ObjectKind::Cylinder, i)) return true;
   if (refs_.empty()) return false;
   const Ray& ray = search.query().ray();
+  const RayInverse inverse(ray);
   double tEnter, tExit;
-  if (!intersectSlabs(bounds_, RayInverse(ray), search.query().tMin(), search.limit(), tEnter,
-                      tExit))
+  if (!intersectSlabs(bounds_, inverse, search.query().tMin(), search.limit(), tEnter, tExit))
     return false;
   // The cell the ray enters, and per axis the step, the distance to the
   // next cell boundary and between boundaries.
@@ -173,8 +182,17 @@ bool PreviewGrid::trace(Search& search, Counters& counters) const {
   for (;;) {
     ++counters.nodeVisits;
     const std::size_t c = cellIndex(cell[0], cell[1], cell[2]);
-    for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
-      if (search.triangle(refs_[k].mesh, refs_[k].triangle)) return true;
+    for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+      const Chunk& chunk = chunks_[refs_[k]];
+      if (chunkSize_ > 1) {
+        const Aabb box{Vec3(chunk.lo[0], chunk.lo[1], chunk.lo[2]),
+                       Vec3(chunk.hi[0], chunk.hi[1], chunk.hi[2])};
+        double t0, t1;
+        if (!intersectSlabs(box, inverse, search.query().tMin(), search.limit(), t0, t1)) continue;
+      }
+      for (std::uint32_t t = chunk.first; t < chunk.first + chunk.count; ++t)
+        if (search.triangle(chunk.mesh, t)) return true;
+    }
     const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
     // Every hit nearer than the cell's far side lies in a cell walked so far.
     if (search.limit() <= next[a] || next[a] > tExit) return false;

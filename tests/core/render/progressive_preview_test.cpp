@@ -1,9 +1,12 @@
-// The Preview structure (a uniform grid, for a first pass while the BVH
-// builds) finds what the BVH finds, and a first-pass-only job stops after
-// its first pass.
+// The Preview structure (a uniform grid over runs of triangles, for a first
+// pass while the BVH builds) finds what the BVH and brute force find, and a
+// first-pass-only job stops after its first pass.
 #include "render/progressive_preview.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
 
 #include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/io/scene_parser.h"
@@ -31,6 +34,23 @@ std::shared_ptr<Scene> previewScene() {
       "cylinder 1.5 0.5 1 0.2 0 1 0 1  0.1 0.1 0.1  0.6 0.6 0.6  0 0 0  1 0\n"
       "plane 0 0 0  0 1 0  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n";
   return std::make_shared<Scene>(parseScene(text, dir / "preview.sce"));
+}
+
+// Every primary ray of `scene`'s camera finds through `grid` the hit brute
+// force finds.
+void expectBruteForceHits(const Scene& scene, const PreviewGrid& grid, const std::string& what) {
+  TraceOptions none;
+  none.accel = AccelMethod::None;
+  const SceneIntersector bruteForce(scene, none);
+  for (int y = 0; y < scene.camera.height(); ++y)
+    for (int x = 0; x < scene.camera.width(); ++x) {
+      const Ray ray = scene.camera.primaryRay(x, y);
+      Counters c;
+      Hit a, b;
+      ASSERT_EQ(bruteForce.closestHit(ray, 0.0, a, c), grid.closestHit(ray, 0.0, b, c));
+      ASSERT_EQ(a.t, b.t) << what << " " << x << "," << y;
+      ASSERT_EQ(a.ref.triangle, b.ref.triangle) << what << " " << x << "," << y;
+    }
 }
 
 TEST(PreviewGrid, FindsTheBvhsNearestHitAndBlockersForEveryPixel) {
@@ -90,18 +110,26 @@ TEST(PreviewGrid, TrianglesAcrossTheWholeSceneMakeACoarserGridNotAHugeOne) {
       dir / "slanted.sce");
   const PreviewGrid grid(scene, TriangleKernel{});
   EXPECT_LE(grid.entries(), 16 * mesh.triangles.size());
-  TraceOptions bruteForce;
-  bruteForce.accel = AccelMethod::None;
-  const SceneIntersector reference(scene, bruteForce);
-  for (int y = 0; y < 40; ++y)
-    for (int x = 0; x < 40; ++x) {
-      const Ray ray = scene.camera.primaryRay(x, y);
-      Counters c;
-      Hit a, b;
-      ASSERT_EQ(reference.closestHit(ray, 0.0, a, c), grid.closestHit(ray, 0.0, b, c));
-      EXPECT_EQ(a.t, b.t);
-      EXPECT_EQ(a.ref.triangle, b.ref.triangle);
-    }
+  expectBruteForceHits(scene, grid, "slanted");
+}
+
+TEST(PreviewGrid, ChunksFollowTheSurfaceOrderAndSingleTrianglesServeAShuffledMesh) {
+  const auto dir = test::scratchDir();
+  MeshData knot = makeTorusKnot(Vec3(0.0), 0.5, 2, 3, 0.3, 128, 16);
+  writeOff(knot, dir / "ordered.off");
+  std::mt19937 random(7);
+  std::shuffle(knot.triangles.begin(), knot.triangles.end(), random);
+  writeOff(knot, dir / "shuffled.off");
+  for (const char* name : {"ordered", "shuffled"}) {
+    const Scene scene = parseScene(
+        "camera 0 0 4  0 0 0  0 1 0  45  32 32\nlight 3 4 3  1 1 1\n"
+        "mesh " +
+            std::string(name) + ".off FLAT 0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n",
+        dir / (std::string(name) + ".sce"));
+    const PreviewGrid grid(scene, TriangleKernel{});
+    EXPECT_EQ(grid.chunkSize(), name == std::string("ordered") ? 16u : 1u) << name;
+    expectBruteForceHits(scene, grid, name);
+  }
 }
 
 TEST(Progressive, AFirstPassOnlyJobEndsAfterItsFirstPassAndEveryPassIsTimed) {
