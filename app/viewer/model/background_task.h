@@ -5,7 +5,8 @@
 // it makes them, and checks between steps whether a newer action cancelled
 // it; a cancelled task's results are dropped. Starting a task cancels the
 // one before, which ends at its next check while the new one already runs:
-// the UI never waits for old work.
+// the UI never waits for old work. Tasks run below the UI thread's priority
+// (background_priority.h).
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -14,6 +15,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "viewer/model/background_priority.h"
 
 namespace meshtrace::viewer {
 
@@ -77,6 +80,7 @@ class BackgroundTask {
     context->phase_ = std::move(firstPhase);
     current_ = context;
     running_.push_back({context, std::thread([context, work = std::move(work)] {
+                          runThisThreadInBackground();
                           try {
                             work(*context);
                           } catch (const std::exception& e) {

@@ -81,7 +81,9 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
       ->capture_default_str();
   cli.add_option("--threads", o.threads, "Render threads (0: all cores)")
       ->check(CLI::NonNegativeNumber);
-  cli.add_option("--worker-nice", o.workerNice, "Lower the render threads' priority by N (0-19)")
+  cli.add_option("--worker-nice", o.workerNice,
+                 "The render threads' nice value, 0-19: above 0 they yield to the UI thread")
+      ->capture_default_str()
       ->check(CLI::Range(0, 19));
   cli.add_flag("--hide-timings", o.hideTimings,
                "Show timing figures as '-' (for stable snapshots)");
@@ -92,6 +94,9 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
   cli.add_flag("--time-opening", o.timeOpening,
                "Headless: open every listed scene in turn, as a drop would, and print the time "
                "from opening to its first and its exact image in the texture");
+  cli.add_flag("--quit-when-done", o.quitWhenDone,
+               "Close the window once the scene is rendered and nothing runs in the background "
+               "(for timing scripts)");
   cli.add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for the render");
   cli.add_option("--describe", o.describe,
                  "Headless: write the text the last frame shows, and where its image, plot and "

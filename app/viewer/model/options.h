@@ -9,6 +9,7 @@
 #include "meshtrace/geometry/mesh.h"
 #include "meshtrace/render/inspect.h"
 #include "viewer/model/ab_compare.h"
+#include "viewer/model/background_priority.h"
 #include "viewer/model/views.h"
 
 namespace meshtrace::viewer {
@@ -52,11 +53,14 @@ struct ViewerOptions {
   std::string reference;          // reference image to compare with
   TraceOptions trace;             // --accel, --triangle, --precision
   int threads = 0;
-  int workerNice = 0;             // > 0: render threads yield to the UI thread
+  // Render threads' nice value: > 0, they yield to the UI thread (and,
+  // within the viewer's autogroup, to nothing else; background_priority.h).
+  int workerNice = kBackgroundNice;
   bool hideTimings = false;       // timing figures as "-" (stable snapshots)
   bool stats = false;             // print timing figures on exit
   bool frameLog = false;          // print each frame's duration (UI and GL parts)
   bool timeOpening = false;       // headless: open each listed scene in turn, print its times
+  bool quitWhenDone = false;      // window: close once the scene is rendered (timing scripts)
   double timeoutSeconds = 600.0;  // headless: give up waiting for the render
   std::string describe;           // headless: write the last frame's text and regions here
 };

@@ -1,15 +1,18 @@
 #include "viewer/model/session.h"
 
 #include <map>
+#include <utility>
 
 #include "viewer/model/scene_writer.h"
 
 namespace meshtrace::viewer {
 
-void SceneSession::beginOpening(const std::filesystem::path& file) {
+std::shared_ptr<const Scene> SceneSession::beginOpening(const std::filesystem::path& file) {
+  std::shared_ptr<const Scene> old = std::move(base_);
   clear();
   file_ = file;
   opening_ = true;
+  return old;
 }
 
 void SceneSession::adopt(const LoadedScene& loaded) {
@@ -101,11 +104,11 @@ RenderRequest SceneSession::request(const TraceOptions& trace, std::uint64_t id)
   return r;
 }
 
-void SceneSession::adoptBase(const RenderScene& scene) {
+std::shared_ptr<const Scene> SceneSession::adoptBase(const RenderScene& scene) {
   if (scene.preview || !scene.allVisible || !base_ ||
       scene.prepared->scene().meshes.size() != base_->meshes.size())
-    return;
-  base_ = scene.prepared->sharedScene();
+    return nullptr;
+  return std::exchange(base_, scene.prepared->sharedScene());
 }
 
 }  // namespace meshtrace::viewer

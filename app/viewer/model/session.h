@@ -24,8 +24,9 @@ struct MeshState {
 
 class SceneSession {
  public:
-  // Forgets the current scene: `file` is being opened.
-  void beginOpening(const std::filesystem::path& file);
+  // Forgets the current scene: `file` is being opened. Returns the scene
+  // it forgets (for the caller to let go of off the UI thread).
+  std::shared_ptr<const Scene> beginOpening(const std::filesystem::path& file);
   // The opening ended: with the loaded scene, or with an error (file:line
   // for bad input).
   void adopt(const LoadedScene& loaded);
@@ -60,7 +61,8 @@ class SceneSession {
   // A render scene of every mesh: its scene (which holds the vertex
   // normals of its PHONG meshes) becomes the base later requests start
   // from, so that switching a mode back costs no copy.
-  void adoptBase(const RenderScene& scene);
+  // Returns the base it replaces (for the caller to let go of).
+  std::shared_ptr<const Scene> adoptBase(const RenderScene& scene);
   // Counts changes of the meshes' modes and visibility.
   std::uint64_t meshRevision() const { return meshRevision_; }
 

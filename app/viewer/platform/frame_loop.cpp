@@ -2,6 +2,7 @@
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <time.h>
 
 #include <chrono>
 #include <thread>
@@ -111,18 +112,27 @@ void drawFrame(ViewerApp& app, int width, int height) {
 }
 
 namespace {
-// When a frame took its input, was built, drawn and shown.
+// When a frame took its input, was built, drawn and shown, and the UI
+// thread's own processor time for it (the rest of its duration it waited
+// for a core, or for GL).
 struct FrameMoments {
   Clock::time_point input, built, drawn, end;
+  double cpuStart = 0.0, cpuEnd = 0.0;
 };
+
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
 
 // --frame-log: each frame's parts, and once per render when its images
 // reached the texture.
 void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool rendering,
               std::uint64_t& loggedJob) {
-  std::fprintf(stderr, "frame %.1f ms: ui %.1f, draw %.1f, present %.1f%s%s\n",
+  std::fprintf(stderr, "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f%s%s\n",
                msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
-               msBetween(m.drawn, m.end), presented ? "" : ", not presented",
+               msBetween(m.drawn, m.end), m.cpuEnd - m.cpuStart, presented ? "" : ", not presented",
                rendering ? ", while rendering" : "");
   const ShownTimes& shown = app.display().shownTimes();
   const ProgressiveStatus s = app.display().status();
@@ -146,6 +156,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     host.waitForInput(app.waitBeforeNextFrameMs(lastInput));
     FrameMoments m;
     lastInput = m.input = Clock::now();
+    m.cpuStart = threadCpuMs();
     app.display().frameBegins();
     const auto [width, height] = host.beginFrame();
     ImGui_ImplOpenGL3_NewFrame();
@@ -161,6 +172,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     }
     app.display().frameEnds();
     m.end = Clock::now();
+    m.cpuEnd = threadCpuMs();
     const bool rendering = app.frameDone(msBetween(m.input, m.end));
     if (app.state().options.frameLog) logFrame(app, m, presented, rendering, loggedJob);
   }

@@ -55,7 +55,11 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     dropTarget = &app;
     glfwSetDropCallback(window, onDrop);
     FrameHost host;
-    host.keepRunning = [&] { return !glfwWindowShouldClose(window); };
+    int idleFrames = 0;
+    host.keepRunning = [&] {
+      idleFrames = app.idle() ? idleFrames + 1 : 0;
+      return !glfwWindowShouldClose(window) && !(options.quitWhenDone && idleFrames > 3);
+    };
     host.waitForInput = [](double ms) {
       if (ms > 0)
         glfwWaitEventsTimeout(ms / 1000.0);

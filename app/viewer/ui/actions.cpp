@@ -1,6 +1,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "viewer/model/camera_control.h"
 #include "viewer/model/reference_lookup.h"
@@ -16,10 +17,10 @@ void setMessage(ViewerState& state, const std::string& message, bool error) {
 
 void openScene(ViewerState& state, const std::filesystem::path& file) {
   state.timing.openedAt = state.timing.actionTime();
-  state.session.beginOpening(file);
+  state.retired.push_back(state.session.beginOpening(file));
   SceneRequests& scenes = state.scenes;
-  scenes.preview.reset();
-  scenes.render.reset();
+  state.retired.push_back(std::exchange(scenes.preview, nullptr));
+  state.retired.push_back(std::exchange(scenes.render, nullptr));
   scenes.failure.clear();
   scenes.trace = state.trace;
   scenes.pipeline->open(file, state.trace, ++scenes.lastId);

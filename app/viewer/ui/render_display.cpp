@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <thread>
+#include <utility>
 
 #include "viewer/model/camera_control.h"
 #include "viewer/model/pass_errors.h"
@@ -52,7 +53,7 @@ bool RenderDisplay::sync(std::shared_ptr<const RenderScene> scene, const CameraS
     stop();
     return false;
   }
-  scene_ = std::move(scene);
+  disposer_.dispose(std::exchange(scene_, std::move(scene)));
   camera_ = Camera(camera);
   ProgressiveSettings settings;
   settings.extraSamples = wish.extraSamples;
@@ -70,7 +71,7 @@ bool RenderDisplay::sync(std::shared_ptr<const RenderScene> scene, const CameraS
 
 void RenderDisplay::stop() {
   renderer_.cancel();
-  scene_.reset();
+  disposer_.dispose(std::exchange(scene_, nullptr));
   frame_ = ProgressiveFrame{};
   frameStatus_ = ProgressiveStatus{};
   shown_ = ShownTimes{};

@@ -10,6 +10,7 @@
 #include "meshtrace/io/image.h"
 #include "meshtrace/render/progressive.h"
 #include "viewer/gl/texture.h"
+#include "viewer/model/disposer.h"
 #include "viewer/model/heat_scales.h"
 #include "viewer/model/render_scene.h"
 #include "viewer/model/views.h"
@@ -35,7 +36,8 @@ class RenderDisplay {
   using Clock = std::chrono::steady_clock;
 
   // `workerNice` > 0 lowers the render threads' priority below the UI
-  // thread's: smoother frames on a busy machine, a slower render. `wake`
+  // thread's: a frame need not wait for them (background_priority.h says
+  // why the render is no slower for it against other programs). `wake`
   // runs on a render thread when the first image, the exact image or the
   // whole render is done; the passes between show with the next frame.
   RenderDisplay(int threads, int workerNice, std::function<void()> wake = {});
@@ -58,6 +60,9 @@ class RenderDisplay {
   // does not fit waits for the next call); `deviation` supplies the
   // deviation data (the depth and cost ranges are tracked here).
   void update(const FalseColorScales& deviation);
+  // Lets go of `object` off the UI thread (render_display.cpp's own
+  // replaced scenes go there too).
+  void dispose(std::shared_ptr<const void> object) { disposer_.dispose(std::move(object)); }
   // Recolour everything on the next update (e.g. new deviation data).
   void invalidate() { dirtyAll_ = true; }
 
@@ -96,6 +101,9 @@ class RenderDisplay {
  private:
   void timeShownImages();
 
+  // Lets go of replaced scenes off the UI thread; declared before the
+  // renderer, so that the renderer's jobs end first.
+  Disposer disposer_;
   ProgressiveRenderer renderer_;
   int coreForFrames_ = 0;  // workers paused during a frame
   ProgressiveFrame frame_;

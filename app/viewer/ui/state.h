@@ -166,6 +166,9 @@ struct ViewerState {
   // window pixels), and the text it showed: what --describe writes.
   std::map<std::string, std::array<float, 4>> regions;
   std::string frameText;
+  // Large objects let go of by an action, for the display's disposer to
+  // free off the UI thread (viewer_app.cpp hands them over each frame).
+  std::vector<std::shared_ptr<const void>> retired;
 };
 
 }  // namespace meshtrace::viewer

@@ -182,12 +182,14 @@ RenderWish ViewerApp::wish() const {
 
 void ViewerApp::receive() {
   SceneRequests& scenes = state_.scenes;
+  for (auto& object : state_.retired) display_.dispose(std::move(object));
+  state_.retired.clear();
   for (Arrival& a : scenes.pipeline->take()) {
     if (!a.error.empty()) {
       state_.session.fail(a.error);
       if (!state_.options.headless) std::fprintf(stderr, "error: %s\n", a.error.c_str());
-      scenes.preview.reset();
-      scenes.render.reset();
+      display_.dispose(std::exchange(scenes.preview, nullptr));
+      display_.dispose(std::exchange(scenes.render, nullptr));
       display_.stop();
       state_.sceneOptionsPending = false;
       continue;
@@ -201,11 +203,14 @@ void ViewerApp::receive() {
     }
     if (a.preview && !scenes.render) scenes.preview = a.preview;
     if (a.render && a.render->request == scenes.lastId) {
-      scenes.render = a.render;
-      scenes.preview.reset();
-      state_.session.adoptBase(*a.render);
+      display_.dispose(std::exchange(scenes.render, a.render));
+      display_.dispose(std::exchange(scenes.preview, nullptr));
+      display_.dispose(state_.session.adoptBase(*a.render));
       if (state_.depthCheckPending) checkBvhDepth();
     }
+    // What was not kept (an answer to an older request) goes too.
+    display_.dispose(std::move(a.preview));
+    display_.dispose(std::move(a.render));
   }
   const std::string failed = scenes.pipeline->error();
   if (!failed.empty() && failed != scenes.failure) {
