@@ -126,18 +126,31 @@ double threadCpuMs() {
   return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
 }
 
-// --frame-log: each frame's parts, and once per render when its images
-// reached the texture.
+// What --frame-log has printed: the renders whose first and exact images
+// it reported, and when the frames began.
+struct FrameLogState {
+  Clock::time_point start = Clock::now();
+  std::uint64_t firstShownJob = 0, exactShownJob = 0;
+};
+
+// --frame-log: each frame's parts and when it ended (ms from the first
+// frame), whether it showed a render's first image (a new camera's, while
+// orbiting), and once per render when its exact image reached the texture.
 void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool rendering,
-              std::uint64_t& loggedJob) {
-  std::fprintf(stderr, "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f%s%s\n",
-               msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
-               msBetween(m.drawn, m.end), m.cpuEnd - m.cpuStart, presented ? "" : ", not presented",
-               rendering ? ", while rendering" : "");
+              FrameLogState& log) {
   const ShownTimes& shown = app.display().shownTimes();
   const ProgressiveStatus s = app.display().status();
-  if (shown.exactImageMs < 0 || s.job == loggedJob) return;
-  loggedJob = s.job;
+  const bool firstShown = shown.firstImageMs >= 0 && s.job != log.firstShownJob;
+  if (firstShown) log.firstShownJob = s.job;
+  std::fprintf(
+      stderr,
+      "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f, at %.1f%s%s%s\n",
+      msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
+      msBetween(m.drawn, m.end), m.cpuEnd - m.cpuStart, msBetween(log.start, m.end),
+      presented ? "" : ", not presented", rendering ? ", while rendering" : "",
+      firstShown ? ", shows a first image" : "");
+  if (shown.exactImageMs < 0 || s.job == log.exactShownJob) return;
+  log.exactShownJob = s.job;
   std::fprintf(stderr,
                "render %s: first image %.1f ms, exact image %.1f ms after asked for; "
                "its first pass %.1f ms, exact pass %.1f ms after it started\n",
@@ -148,7 +161,7 @@ void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool render
 
 void runFrames(ViewerApp& app, const FrameHost& host) {
   Clock::time_point lastInput = Clock::now() - std::chrono::seconds(1);
-  std::uint64_t loggedJob = 0;
+  FrameLogState log;
   bool presented = true;
   while (host.keepRunning()) {
     if (presented && !app.display().imageWaiting())
@@ -174,7 +187,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     m.end = Clock::now();
     m.cpuEnd = threadCpuMs();
     const bool rendering = app.frameDone(msBetween(m.input, m.end));
-    if (app.state().options.frameLog) logFrame(app, m, presented, rendering, loggedJob);
+    if (app.state().options.frameLog) logFrame(app, m, presented, rendering, log);
   }
 }
 

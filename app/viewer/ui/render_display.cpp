@@ -43,11 +43,18 @@ RenderDisplay::RenderDisplay(int threads, int workerNice, std::function<void()> 
 
 bool RenderDisplay::sync(std::shared_ptr<const RenderScene> scene, const CameraSpec& camera,
                          const RenderWish& wish, Clock::time_point requestedAt) {
-  const bool changed = !started_ || scene != scene_ || !sameCamera(camera, camera_.spec()) ||
-                       !sameSettings(wish, wish_);
+  const bool cameraMoved = !sameCamera(camera, camera_.spec());
+  const bool changed = !started_ || scene != scene_ || cameraMoved || !sameSettings(wish, wish_);
   if (wish.view != wish_.view || wish.overlay != wish_.overlay) dirtyAll_ = true;
+  const bool onlyCameraMoved =
+      changed && started_ && scene && scene == scene_ && sameSettings(wish, wish_) && cameraMoved;
   wish_ = wish;
   if (!changed) return false;
+  // While the camera moves (an orbit), each camera's render shows its first
+  // image before the next camera's starts: restarting on every frame would
+  // show only pieces of coarse passes, each camera's replaced by the next's.
+  cameraWaiting_ = onlyCameraMoved && shown_.firstImageMs < 0;
+  if (cameraWaiting_) return false;
   started_ = true;
   if (!scene) {
     stop();
@@ -71,6 +78,7 @@ bool RenderDisplay::sync(std::shared_ptr<const RenderScene> scene, const CameraS
 
 void RenderDisplay::stop() {
   renderer_.cancel();
+  cameraWaiting_ = false;
   disposer_.dispose(std::exchange(scene_, nullptr));
   frame_ = ProgressiveFrame{};
   frameStatus_ = ProgressiveStatus{};
@@ -96,7 +104,8 @@ void RenderDisplay::timeShownImages() {
 bool RenderDisplay::imageWaiting() const {
   if (!scene_) return false;
   const ProgressiveStatus s = renderer_.status();
-  return (s.coarseDone && shown_.firstImageMs < 0) || (s.exactDone && shown_.exactImageMs < 0);
+  return (s.coarseDone && shown_.firstImageMs < 0) || (s.exactDone && shown_.exactImageMs < 0) ||
+         (cameraWaiting_ && shown_.firstImageMs >= 0);
 }
 
 void RenderDisplay::update(const FalseColorScales& deviation) {

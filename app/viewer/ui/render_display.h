@@ -81,7 +81,8 @@ class RenderDisplay {
   // A render runs whose coarse pass has not reached the texture yet.
   bool awaitingFirstImage() const { return scene_ && shown_.firstImageMs < 0; }
   // The render has reached its first or its exact image, and the texture
-  // not yet: worth a frame at once.
+  // not yet, or a moved camera waits for a first image shown: worth a
+  // frame at once.
   bool imageWaiting() const;
   bool active() const { return scene_ != nullptr; }
   // The scene of the current render, or null.
@@ -115,6 +116,7 @@ class RenderDisplay {
   Clock::time_point requestedAt_;
   ShownTimes shown_;
   bool started_ = false;
+  bool cameraWaiting_ = false;  // a moved camera waits for the render's first image
   bool dirtyAll_ = true;
   FalseColorScales scales_;
   // The ranges are measured as tiles arrive and applied at most every

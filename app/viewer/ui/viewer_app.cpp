@@ -259,7 +259,14 @@ void ViewerApp::sync() {
       observer.active && observer.camera ? *observer.camera : state_.session.camera();
   const bool started =
       display_.sync(state_.session.loaded() ? scene : nullptr, camera, wish(), requestedAt);
-  if (started) openingJobAt_ = t.openedAt;
+  if (started) {
+    const auto ms = [](double v) {
+      return std::chrono::duration_cast<Clock::duration>(
+          std::chrono::duration<double, std::milli>(v));
+    };
+    firstImageDeadline_ =
+        t.openedAt ? *t.openedAt + ms(kOpeningWaitMs) : Clock::now() + ms(kRestartWaitMs);
+  }
   // The opening ends with the full render's start (a preview's is not it).
   if ((started && scene && !scene->preview) ||
       (!state_.session.loaded() && !state_.session.opening()))
@@ -346,11 +353,12 @@ void ViewerApp::endCapture() {
   ImGui::LogFinish();
 }
 
-bool ViewerApp::waitingForOpeningImage() const {
-  return openingJobAt_ && display_.awaitingFirstImage() && msSince(*openingJobAt_) < kOpeningWaitMs;
+bool ViewerApp::waitingForFirstImage() const {
+  return firstImageDeadline_ && display_.awaitingFirstImage() &&
+         Clock::now() < *firstImageDeadline_;
 }
 
-bool ViewerApp::shouldPresent() const { return !waitingForOpeningImage(); }
+bool ViewerApp::shouldPresent() const { return !waitingForFirstImage(); }
 
 bool ViewerApp::frameDone(double ms) {
   TimingStats& t = state_.timing;
@@ -390,7 +398,7 @@ std::vector<std::string> ViewerApp::failures() const {
 
 double ViewerApp::waitBeforeNextFrameMs(Clock::time_point lastFrameInput) const {
   if (display_.imageWaiting()) return 0.0;
-  if (waitingForOpeningImage()) return std::max(0.0, kOpeningWaitMs - msSince(*openingJobAt_));
+  if (waitingForFirstImage()) return std::max(0.0, -msSince(*firstImageDeadline_));
   double ms = 1000.0 / 10.0;
   // Input itself ends the wait; these frames serve what follows input
   // without more of it (a button's release, a menu closing): a few suffice.

@@ -28,9 +28,11 @@ class ViewerApp {
   // One frame's logic, between ImGui::NewFrame and ImGui::Render; the
   // user's input for it was taken at `inputAt`.
   void frame(Clock::time_point inputAt);
-  // False for a frame built while a scene just opened waits for its first
-  // image (for at most kOpeningWaitMs): drawing it would show an empty image
-  // and hold the first image back by the time the draw takes.
+  // False for a frame built while a render just started waits for its
+  // first image (for at most kOpeningWaitMs after opening a scene,
+  // kRestartWaitMs after any other start, e.g. each step of an orbit):
+  // drawing it would show an empty or the last image and hold the first
+  // image back by the time the draw takes.
   bool shouldPresent() const;
   // Called after each frame with its duration, from taking the input to
   // the frame on screen (or built, when not presented); true if it counts
@@ -70,6 +72,7 @@ class ViewerApp {
   RenderDisplay& display() { return display_; }
 
   static constexpr double kOpeningWaitMs = 100.0;
+  static constexpr double kRestartWaitMs = 30.0;
   static constexpr int kFramesAfterInput = 2;
 
  private:
@@ -94,9 +97,9 @@ class ViewerApp {
   void sync();
   void beginCapture();
   void endCapture();
-  // A scene was just opened (less than kOpeningWaitMs ago) and its first
-  // image is not in the texture yet.
-  bool waitingForOpeningImage() const;
+  // The current render started less than kOpeningWaitMs (a scene opened)
+  // or kRestartWaitMs ago and its first image is not in the texture yet.
+  bool waitingForFirstImage() const;
   RenderWish wish() const;
 
   ViewerState state_;
@@ -106,8 +109,8 @@ class ViewerApp {
   AbStage abStage_ = AbStage::None;
   bool captureText_ = false;
   bool renderingAtFrameStart_ = false;
-  // The current render was started by opening its scene, at this time.
-  std::optional<Clock::time_point> openingJobAt_;
+  // Until when a frame waits for the current render's first image.
+  std::optional<Clock::time_point> firstImageDeadline_;
 };
 
 }  // namespace meshtrace::viewer
