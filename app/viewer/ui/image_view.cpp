@@ -199,16 +199,30 @@ void drawReadouts(const std::vector<Readout>& lines) {
 // What the background work does, while it matters to what is shown: the
 // opening of a scene (in place of an image), a preview's replacement, a
 // render scene being remade.
-void drawWorkStatus(ViewerState& state, RenderDisplay& display) {
-  const ScenePipeline& pipeline = *state.scenes.pipeline;
-  if (!pipeline.busy()) return;
-  const bool previewShown = display.renderScene() && display.renderScene()->preview;
-  const std::string phase = pipeline.phase();
+// A task's phase and, unless timings are hidden, how long it has run.
+template <typename Task>
+std::string phaseLine(const ViewerState& state, const Task& task) {
   char line[256];
   if (state.options.hideTimings)
-    std::snprintf(line, sizeof line, "%s ...", phase.c_str());
+    std::snprintf(line, sizeof line, "%s ...", task.phase().c_str());
   else
-    std::snprintf(line, sizeof line, "%s ... %.1f s", phase.c_str(), pipeline.phaseMs() / 1000.0);
+    std::snprintf(line, sizeof line, "%s ... %.1f s", task.phase().c_str(),
+                  task.phaseMs() / 1000.0);
+  return line;
+}
+
+void drawWorkStatus(ViewerState& state, RenderDisplay& display) {
+  const ScenePipeline& pipeline = *state.scenes.pipeline;
+  const BackgroundTask<CrossCheckState::Result>& check = *state.crosscheck.task;
+  if (!pipeline.busy() && state.view == View::NormalDeviation && check.busy()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "Meshes grey until done: %s",
+                       phaseLine(state, check).c_str());
+    return;
+  }
+  if (!pipeline.busy()) return;
+  const bool previewShown = display.renderScene() && display.renderScene()->preview;
+  const std::string text = phaseLine(state, pipeline);
+  const char* line = text.c_str();
   if (!display.showsImage()) {
     ImGui::Text("Opening %s", state.session.file().filename().string().c_str());
     // No fraction is known: a block sweeps along the bar while work goes on.
