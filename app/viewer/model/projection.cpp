@@ -1,6 +1,17 @@
 #include "viewer/model/projection.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace meshtrace::viewer {
+
+namespace {
+// Corner i of a box: bit 0 picks max x, bit 1 max y, bit 2 max z.
+Vec3 corner(const Aabb& box, int i) {
+  return Vec3(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+              i & 4 ? box.max.z : box.min.z);
+}
+}  // namespace
 
 Projection::Projection(const Camera& camera) {
   const CameraSpec& spec = camera.spec();
@@ -45,15 +56,24 @@ std::optional<std::pair<ImagePoint, ImagePoint>> Projection::projectSegment(cons
   return std::make_pair(*pa, *pb);
 }
 
+double imageExtent(const Projection& projection, const Aabb& box) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int i = 0; i < 8; ++i) {
+    const auto q = projection.project(corner(box, i));
+    if (!q) return INFINITY;
+    lo[0] = std::min(lo[0], q->x);
+    lo[1] = std::min(lo[1], q->y);
+    hi[0] = std::max(hi[0], q->x);
+    hi[1] = std::max(hi[1], q->y);
+  }
+  return std::max(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
 std::vector<std::pair<Vec3, Vec3>> boxEdges(const Aabb& box) {
   std::vector<std::pair<Vec3, Vec3>> edges;
-  const Vec3 lo = box.min, hi = box.max;
-  const auto corner = [&](int i) {
-    return Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-  };
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
-      if (!(i & bit)) edges.emplace_back(corner(i), corner(i | bit));
+      if (!(i & bit)) edges.emplace_back(corner(box, i), corner(box, i | bit));
   return edges;
 }
 

@@ -34,6 +34,11 @@ class Projection {
   double planeDistance_ = 1.0, near_ = 1e-6;
 };
 
+// The larger side of the rectangle around a box's projected corners, in
+// image pixels: how much of the image the box takes. Infinite for a box
+// reaching behind the camera.
+double imageExtent(const Projection& projection, const Aabb& box);
+
 // The twelve edges of a box, as pairs of corners.
 std::vector<std::pair<Vec3, Vec3>> boxEdges(const Aabb& box);
 

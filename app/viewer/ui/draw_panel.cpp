@@ -53,10 +53,12 @@ void drawDrawPanel(ViewerState& state, RenderDisplay& display) {
       ImGui::SliderInt("depth", &d.depth, 0, probe.levelDepth);
       d.depth = std::clamp(d.depth, 0, probe.levelDepth);
       const CutCache& c = state.cut;
-      if (c.scene == scene && c.depth == d.depth && c.level == d.level)
-        ImGui::Text("%zu%s boxes (nodes at depth %d, and leaves above it)%s", c.cut.boxes.size(),
-                    c.cut.truncated ? "+" : "", d.depth,
-                    c.cut.truncated ? ": the first drawn" : "");
+      if (c.scene == scene && c.depth == d.depth && c.level == d.level) {
+        ImGui::Text("%zu%s boxes: nodes at depth %d, and leaves above it", c.cut.boxes.size(),
+                    c.cut.truncated ? "+" : "", d.depth);
+        if (c.drawn < c.cut.boxes.size())
+          ImGui::TextDisabled("the %zu largest in the image drawn", c.drawn);
+      }
     }
   }
   ImGui::Separator();

@@ -17,8 +17,12 @@
 namespace meshtrace::viewer {
 
 namespace {
-// More boxes than this cost a software rasteriser too much of a frame.
-constexpr std::size_t kMaxCutBoxes = 4096;
+// A BVH level's cut is fetched up to kMaxCutBoxes nodes; of those, the
+// kMaxDrawnBoxes largest in the image are drawn: more cost a software
+// rasteriser too much of a frame (12 lines each, redrawn every frame), and
+// the smallest are a few pixels that add nothing to the picture.
+constexpr std::size_t kMaxCutBoxes = std::size_t{1} << 16;
+constexpr std::size_t kMaxDrawnBoxes = 512;
 
 ImU32 rayColor(RayKind kind) {
   switch (kind) {
@@ -44,6 +48,7 @@ class Painter {
   void box(const Aabb& box, ImU32 color, float thickness = 1.0f) {
     for (const auto& [a, b] : boxEdges(box)) line(a, b, color, thickness);
   }
+  const Projection& projection() const { return projection_; }
   void dot(const Vec3& p, ImU32 color) {
     if (const auto q = projection_.project(p)) draw_->AddCircleFilled(toScreen_(*q), 3.5f, color);
   }
@@ -109,7 +114,22 @@ void drawFindings(ViewerState& state, RenderDisplay& display, ImDrawList* draw,
   const DrawOptions& d = state.draw;
   if (d.cut) {
     const BvhCut& cut = cutOf(state, *scene);
-    for (const BvhNodeBox& n : cut.boxes) paint.box(n.box, IM_COL32(80, 200, 255, 150));
+    std::vector<std::size_t> order(cut.boxes.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (order.size() > kMaxDrawnBoxes) {
+      std::vector<double> extent(order.size());
+      for (std::size_t i = 0; i < order.size(); ++i)
+        extent[i] = imageExtent(paint.projection(), cut.boxes[i].box);
+      std::nth_element(order.begin(), order.begin() + kMaxDrawnBoxes, order.end(),
+                       [&](std::size_t a, std::size_t b) { return extent[a] > extent[b]; });
+      order.resize(kMaxDrawnBoxes);
+    }
+    state.cut.drawn = order.size();
+    // Plain lines: an anti-aliased line is three quads to rasterise.
+    const ImDrawListFlags flags = draw->Flags;
+    draw->Flags &= ~ImDrawListFlags_AntiAliasedLines;
+    for (std::size_t i : order) paint.box(cut.boxes[i].box, IM_COL32(80, 200, 255, 150));
+    draw->Flags = flags;
   }
   const CameraSpec& main = state.session.camera();
   const Aabb bounds = sceneBounds(scene->scene());

@@ -78,6 +78,7 @@ struct CutCache {
   BvhLevel level = BvhLevel::Triangles;
   int depth = -1;
   BvhCut cut;
+  std::size_t drawn = 0;  // of its boxes, the largest in the image (findings.cpp)
 };
 
 // Inspections of pixels through the main camera, kept while the render

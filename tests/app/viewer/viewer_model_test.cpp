@@ -11,6 +11,7 @@
 #include "viewer/model/camera_control.h"
 #include "viewer/model/geometry_load.h"
 #include "viewer/model/options.h"
+#include "viewer/model/projection.h"
 #include "viewer/model/reference_lookup.h"
 #include "viewer/model/render_scene.h"
 #include "viewer/model/scene_catalog.h"
@@ -168,6 +169,48 @@ TEST(CameraControl, CameraLineParsesBackToTheSameCamera) {
   EXPECT_EQ(s.camera.spec().eye, c.eye);
   EXPECT_EQ(s.camera.spec().center, c.center);
   EXPECT_EQ(s.camera.spec().fovyDegrees, c.fovyDegrees);
+}
+
+TEST(Projection, PointsOnAPixelsRayLandOnThePixelAndABoxTakesItsExtent) {
+  CameraSpec spec;
+  spec.eye = Vec3(0.5, 0.2, 5.0);
+  spec.center = Vec3(0.0);
+  spec.up = Vec3(0.0, 1.0, 0.0);
+  spec.fovyDegrees = 40.0;
+  spec.width = 64;
+  spec.height = 48;
+  const Camera camera(spec);
+  const Projection projection(camera);
+  // The camera's own rays are the independent truth: a point on pixel
+  // (x, y)'s ray projects back to (x, y), whatever its distance.
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {63.0, 47.0}, {10.5, 30.25}, {-5.0, 60.0}})
+    for (double t : {0.5, 3.0, 40.0}) {
+      const Ray ray = camera.primaryRay(x, y);
+      const auto q = projection.project(ray.origin + t * ray.direction);
+      ASSERT_TRUE(q);
+      EXPECT_NEAR(q->x, x, 1e-9);
+      EXPECT_NEAR(q->y, y, 1e-9);
+    }
+  const Ray behind = camera.primaryRay(20.0, 20.0);
+  EXPECT_FALSE(projection.project(behind.origin - behind.direction));
+  // A box whose corners lie on the rays of pixels (10, 10) and (30, 20),
+  // in one plane facing the camera: 20 pixels wide, 10 high.
+  const Vec3 toCenter = glm::normalize(spec.center - spec.eye);
+  const auto onPlane = [&](double x, double y) {
+    const Ray r = camera.primaryRay(x, y);
+    return r.origin + (4.0 / glm::dot(r.direction, toCenter)) * r.direction;
+  };
+  Aabb box;
+  box.extend(onPlane(10.0, 10.0));
+  box.extend(onPlane(30.0, 20.0));
+  // Axis-aligned, the box is not quite the plane's rectangle: its extent
+  // lies between the rectangle's and a little more.
+  EXPECT_GE(imageExtent(projection, box), 20.0 - 1e-9);
+  EXPECT_LT(imageExtent(projection, box), 24.0);
+  Aabb aroundEye;
+  aroundEye.extend(spec.eye - Vec3(1.0));
+  aroundEye.extend(spec.eye + Vec3(1.0));
+  EXPECT_EQ(imageExtent(projection, aroundEye), INFINITY);
 }
 
 TEST(SceneCatalog, ListsScenesBelowAFolder) {

@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(
         Snapshot{"ray_tree",
                  "--pin 150,70 --draw rays,boxes,nodes --open draw",
                  {"ray tree of the pinned pixel", "reflection 1"}},
-        Snapshot{"bvh_cut", "--draw cut --bvh-depth 1 --open draw", {"boxes (nodes at depth 1"}},
+        Snapshot{"bvh_cut", "--draw cut --bvh-depth 1 --open draw", {"boxes: nodes at depth 1"}},
         Snapshot{"observer", "--pin 150,70 --observer --open draw", {"look from the observer"}},
         Snapshot{"ab_wipe",
                  "--b-shading ball=FLAT --ab wipe --open ab",
