@@ -40,6 +40,40 @@ TEST_P(ViewerBadInput, ExitsWithTheErrorAndLeavesTheOutput) {
 INSTANTIATE_TEST_SUITE_P(Cases, ViewerBadInput, ::testing::ValuesIn(test::badInputs()),
                          [](const auto& info) { return info.param.name; });
 
+// Scenes a headless run once turned into a picture of the error with exit
+// 0: a scene that is not there, a depth of 1e9 (or a whole number as
+// large), a mesh that is /dev/zero (endless, of no size to read).
+class ViewerBrokenScene : public ::testing::TestWithParam<test::BadInput> {};
+
+TEST_P(ViewerBrokenScene, ExitsNonZeroNamingTheFileAndLeavesTheOutput) {
+  const test::BadInput& input = GetParam();
+  const auto dir = test::scratchDir();
+  if (!input.scene.empty()) test::writeFile(dir / "bad.sce", input.scene);
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  test::expectRefusal(viewerTool(), headless(dir, {(dir / "bad.sce").string()}), dir,
+                      input.mentions, dir / "out.png");
+}
+
+const std::string kSmallCamera = "camera 0 0 5  0 0 0  0 1 0  45 32 24\n";
+const std::string kGrey = " 0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ViewerBrokenScene,
+    ::testing::Values(test::BadInput{"Missing", "", "", {"bad.sce", "not found"}},
+                      test::BadInput{"DepthOf1e9",
+                                     kSmallCamera + "depth 1e9\nsphere 0 0 0 1" + kGrey,
+                                     "",
+                                     {"bad.sce:2", "1e9"}},
+                      test::BadInput{"DepthOfABillion",
+                                     kSmallCamera + "depth 1000000000\nsphere 0 0 0 1" + kGrey,
+                                     "",
+                                     {"bad.sce:2", "1000000000"}},
+                      test::BadInput{"MeshOfDevZero",
+                                     kSmallCamera + "mesh /dev/zero FLAT" + kGrey,
+                                     "",
+                                     {"bad.sce:2", "/dev/zero"}}),
+    [](const auto& info) { return info.param.name; });
+
 // The test scene in a scratch folder beside an existing out.png.
 fs::path sceneCopy() {
   const auto dir = test::scratchDir();
