@@ -1,6 +1,8 @@
 // The viewer's model: what it does without a window.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "meshtrace/io/scene_parser.h"
@@ -8,10 +10,14 @@
 #include "support/bad_inputs.h"
 #include "support/files.h"
 #include "support/paths.h"
+#include "viewer/model/ab_compare.h"
 #include "viewer/model/camera_control.h"
 #include "viewer/model/geometry_load.h"
+#include "viewer/model/heat_scales.h"
+#include "viewer/model/image_viewport.h"
 #include "viewer/model/options.h"
 #include "viewer/model/projection.h"
+#include "viewer/model/ray_tree.h"
 #include "viewer/model/reference_lookup.h"
 #include "viewer/model/render_scene.h"
 #include "viewer/model/scene_catalog.h"
@@ -211,6 +217,128 @@ TEST(Projection, PointsOnAPixelsRayLandOnThePixelAndABoxTakesItsExtent) {
   aroundEye.extend(spec.eye - Vec3(1.0));
   aroundEye.extend(spec.eye + Vec3(1.0));
   EXPECT_EQ(imageExtent(projection, aroundEye), INFINITY);
+}
+
+TEST(ImageViewport, FromOneToOneOnEveryPixelCanBeHoveredAndZoomKeepsThePointUnderTheMouse) {
+  // A 1024-pixel square image in a smaller area: fitted it is scaled down;
+  // at 1:1 and closer, moving the mouse a screen pixel at a time meets
+  // every column in turn, none skipped, and panning reaches all of them.
+  const ScreenRect area{100.0f, 50.0f, 600.0f, 500.0f};
+  ImageViewport v;
+  v.layout(area, 1024, 1024);
+  EXPECT_LT(v.zoom(), 1.0);
+  for (double zoom : {1.0, 3.0, 24.0}) {
+    v.zoomTo(zoom, 0.0, 512.0);
+    v.layout(area, 1024, 1024);
+    std::vector<bool> seen(1024, false);
+    for (int pass = 0;
+         pass < 4000 && !std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }); ++pass) {
+      int last = -1;
+      for (float sx = area.x; sx < area.x + area.width; sx += 1.0f) {
+        const auto p = v.pixelAt(sx, area.y + 250.0f);
+        if (!p) continue;
+        if (last >= 0) {
+          ASSERT_LE(p->first - last, 1) << "zoom " << zoom << " skips a column";
+        }
+        last = p->first;
+        seen[static_cast<std::size_t>(p->first)] = true;
+      }
+      v.panBy(-area.width / 2, 0.0f);
+      v.layout(area, 1024, 1024);
+    }
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](bool b) { return b; })) << zoom;
+    // A pixel's centre on screen is inside that pixel.
+    v.zoomTo(zoom, 300.0, 700.0);
+    v.layout(area, 1024, 1024);
+    const auto [sx, sy] = v.toScreen(300.5, 700.5);
+    EXPECT_EQ(v.pixelAt(sx, sy), std::make_pair(300, 700));
+  }
+  const auto before = v.pixelAt(222.0f, 333.0f);
+  v.zoomAt(2.0, 222.0f, 333.0f);
+  v.layout(area, 1024, 1024);
+  EXPECT_EQ(v.pixelAt(222.0f, 333.0f), before);
+  EXPECT_DOUBLE_EQ(v.zoom(), 48.0);
+}
+
+TEST(HeatScales, PercentileByNearestRankAndNothingForNoValues) {
+  std::vector<float> values;
+  for (int i = 100; i >= 1; --i) values.push_back(float(i));
+  EXPECT_EQ(percentile(values, 0.02), 2.0);
+  EXPECT_EQ(percentile(values, 0.98), 98.0);
+  EXPECT_EQ(percentile(values, 0.0), 1.0);
+  EXPECT_EQ(percentile(values, 1.0), 100.0);
+  std::vector<float> none;
+  EXPECT_TRUE(std::isnan(percentile(none, 0.5)));
+}
+
+TEST(RayTree, PrimaryHitReflectionAndShadowRaysOneBlockedWithItsBlockerNamed) {
+  // A mirror at z = 0 faced by the camera (pixel (1, 1) of a 2x2 image
+  // looks at its centre); a light above and behind the camera with a
+  // sphere on the way to it, one to the side with nothing between. The
+  // expected points are worked out here from the camera's ray.
+  const Scene scene = parseScene(
+      "camera 0 0 5  0 0 0  0 1 0  45  2 2\ndepth 1\n"
+      "light 0 3 3  1 1 1\nlight 3 0 3  1 1 1\n"
+      "plane 0 0 0  0 0 1  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0.5\n"
+      "sphere 0 1.5 1.5 0.3  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n",
+      "ray_tree.sce");
+  const Camera camera(scene.camera);
+  const SceneIntersector intersector(scene, TraceOptions{});
+  const PixelInspection in = inspectPixel(intersector, camera, 1.0, 1.0);
+  const auto describe = [](const PrimitiveRef& ref) {
+    return ref.kind == ObjectKind::Sphere ? std::string("the sphere") : std::string("the mirror");
+  };
+  const std::vector<RaySegment> tree = rayTree(in, scene, 100.0, describe);
+  const auto near = [](const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-6; };
+  const auto find = [&](RayKind kind, int level) -> const RaySegment* {
+    for (const RaySegment& s : tree)
+      if (s.kind == kind && s.level == level) return &s;
+    return nullptr;
+  };
+  const Ray ray = camera.primaryRay(1.0, 1.0);
+  const Vec3 hit = ray.origin + (-ray.origin.z / ray.direction.z) * ray.direction;
+  const RaySegment* primary = find(RayKind::Primary, 0);
+  ASSERT_TRUE(primary);
+  EXPECT_TRUE(near(primary->from, Vec3(0, 0, 5)));
+  EXPECT_TRUE(near(primary->to, hit));
+  // The shadow ray toward (0, 3, 3) enters the sphere where
+  // |hit + t d - c| = r first.
+  const Vec3 d = glm::normalize(Vec3(0, 3, 3) - hit);
+  const Vec3 oc = hit - Vec3(0, 1.5, 1.5);
+  const double halfB = glm::dot(oc, d);
+  const double entry = -halfB - std::sqrt(halfB * halfB - (glm::dot(oc, oc) - 0.09));
+  const RaySegment* blocked = find(RayKind::Blocked, 0);
+  ASSERT_TRUE(blocked);
+  EXPECT_TRUE(near(blocked->from, hit));
+  EXPECT_TRUE(near(blocked->to, hit + entry * d));
+  EXPECT_NE(blocked->label.find("the sphere"), std::string::npos) << blocked->label;
+  const RaySegment* past = find(RayKind::PastBlocker, 0);
+  ASSERT_TRUE(past);
+  EXPECT_TRUE(near(past->to, Vec3(0, 3, 3)));
+  const RaySegment* lit = find(RayKind::Lit, 0);
+  ASSERT_TRUE(lit);
+  EXPECT_TRUE(near(lit->from, hit));
+  EXPECT_TRUE(near(lit->to, Vec3(3, 0, 3)));
+  // The mirror reflects the ray about its normal; it then meets nothing.
+  const RaySegment* reflection = find(RayKind::Reflection, 1);
+  ASSERT_TRUE(reflection) << "no reflection segment";
+  EXPECT_TRUE(near(reflection->from, hit));
+  const Vec3 mirrored(ray.direction.x, ray.direction.y, -ray.direction.z);
+  EXPECT_NEAR(glm::dot(glm::normalize(reflection->to - reflection->from), mirrored), 1.0, 1e-9);
+  EXPECT_EQ(reflection->label, "miss");
+}
+
+TEST(AbCompare, FiguresAndTheDifferenceImageFromTheChannels) {
+  // Two pixels; B differs from A by 3 in one channel: MSE 9 / 6 channels.
+  const Image8 a{2, 1, {0, 0, 0, 10, 20, 30}};
+  const Image8 b{2, 1, {0, 0, 0, 10, 20, 33}};
+  const AbComparison c = compareWithB(7, a, b);
+  EXPECT_EQ(c.job, 7u);
+  EXPECT_NEAR(c.difference.rmse, std::sqrt(1.5), 1e-12);
+  EXPECT_NEAR(c.difference.psnr, 20.0 * std::log10(255.0 / std::sqrt(1.5)), 1e-9);
+  EXPECT_EQ(c.difference.maxDifference, 3);
+  EXPECT_EQ(c.differenceRgba,
+            (std::vector<std::uint8_t>{0, 0, 0, 255, 0, 0, 3 * kAbDifferenceGain, 255}));
 }
 
 TEST(SceneCatalog, ListsScenesBelowAFolder) {
