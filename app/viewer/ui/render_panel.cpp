@@ -32,7 +32,12 @@ void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
   const ProgressiveStatus s = display.status();
   if (display.active()) {
     char overlayText[64];
-    if (s.exactDone)
+    const bool preview = display.renderScene() && display.renderScene()->preview;
+    if (preview)
+      std::snprintf(
+          overlayText, sizeof overlayText, "%s",
+          s.finished ? "preview: first pass, while the scene is made" : "preview: first pass");
+    else if (s.exactDone)
       std::snprintf(overlayText, sizeof overlayText, "exact%s, %d sample%s per pixel",
                     s.finished ? "" : " + AA", s.samplesPerPixel,
                     s.samplesPerPixel == 1 ? "" : "s");
