@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   // draws on the UI thread instead of handing each frame to its own threads,
   // which compete with the render workers for the cores. Ignored by GPUs.
   setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);
-  const meshtrace::viewer::BackgroundTbbWorkers backgroundTbb;
+  meshtrace::viewer::runTbbWorkersInBackground();
   int exitCode = 0;
   const auto options = meshtrace::viewer::parseOptions(argc, argv, exitCode);
   if (!options) return exitCode;

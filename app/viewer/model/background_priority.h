@@ -5,7 +5,6 @@
 // (autogroup): the lower priority weighs only against the viewer's own
 // threads, not against other programs, so the work is no slower while the
 // UI thread sleeps, which is nearly always.
-#include <tbb/task_scheduler_observer.h>
 
 namespace meshtrace::viewer {
 
@@ -14,15 +13,9 @@ inline constexpr int kBackgroundNice = 10;
 // Gives the calling thread kBackgroundNice (Linux gives each thread its own).
 void runThisThreadInBackground();
 
-// While it exists, TBB's worker threads run at kBackgroundNice; threads
-// that call into TBB themselves (the UI thread, a task's thread) keep theirs.
-class BackgroundTbbWorkers : public tbb::task_scheduler_observer {
- public:
-  BackgroundTbbWorkers() { observe(true); }
-  ~BackgroundTbbWorkers() override { observe(false); }
-  void on_scheduler_entry(bool isWorker) override {
-    if (isWorker) runThisThreadInBackground();
-  }
-};
+// From now on, for the rest of the process, TBB's worker threads run at
+// kBackgroundNice; threads that call into TBB themselves (the UI thread, a
+// task's thread) keep theirs. Call once, early in main.
+void runTbbWorkersInBackground();
 
 }  // namespace meshtrace::viewer
