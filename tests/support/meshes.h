@@ -14,4 +14,11 @@ Mesh makeMesh(const char* name, MeshData data);
 // The bounding box of each triangle of `m`, in triangle order.
 std::vector<Aabb> triangleBoxes(const MeshData& m);
 
+// `m` with, for every `every`-th triangle, appended: `copies` exact copies
+// (triangle_copies.h) listing its vertices, `copies` listing new vertices
+// at the same positions, and triangles that are not copies though they
+// have the same box: its five other corner orders, and its corners with
+// the first moved by one ulp.
+MeshData withCopies(MeshData m, std::size_t every, int copies);
+
 }  // namespace meshtrace::test

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "accel/triangle_copies.h"
 #include "accel/triangle_set.h"
 
 namespace meshtrace {
@@ -139,6 +140,7 @@ struct Binner {
     const __m128 b = _mm_mul_ps(_mm_sub_ps(p.centroid2(), origin), scale);
     return _mm_cvttps_epi32(_mm_max_ps(_mm_min_ps(b, last), _mm_setzero_ps()));
   }
+  bool usableAxis() const { return usable[0] || usable[1] || usable[2]; }
 };
 
 // Only the first `used` bins of each axis are set up and read: most nodes
@@ -197,9 +199,16 @@ struct Split {
 class Builder {
  public:
   // floatBoxOf(i) is primitive i's box as a FloatBox.
+  // With `mesh`, primitive i is its triangle i, and spare copies of a
+  // triangle are left out (triangle_copies.h).
   template <typename FloatBoxOf>
-  Builder(std::size_t n, const FloatBoxOf& floatBoxOf, const BvhBuildOptions& options, Bvh& out)
-      : options_(options), out_(out), bins_(std::clamp(options.bins, 2, kMaxBins)), refs_(n) {
+  Builder(std::size_t n, const FloatBoxOf& floatBoxOf, const BvhBuildOptions& options, Bvh& out,
+          const Mesh* mesh = nullptr)
+      : options_(options),
+        out_(out),
+        mesh_(mesh),
+        bins_(std::clamp(options.bins, 2, kMaxBins)),
+        refs_(n) {
     // Room for the most nodes a tree can have; the pages of those never
     // used are never touched.
     out_.nodes.resize(2 * n);
@@ -222,7 +231,7 @@ class Builder {
           for (std::uint32_t i = b; i < e; ++i) acc.add(refs_[i]);
         },
         root);
-    build(out_.nodes[0], 0, n, root, 1, nullptr);
+    build(out_.nodes[0], 0, n, root, 1, nullptr, false);
     const std::uint32_t count = nodeCount_.load();
     out_.nodes.resize(count);
     out_.order.resize(n);
@@ -232,6 +241,7 @@ class Builder {
                           out_.order[i] = refs_[i].index();
                       });
     out_.depth = depth_.load();
+    out_.copiesLeftOut = copies_.load();
   }
 
  private:
@@ -409,14 +419,14 @@ class Builder {
   }
 
   void buildSubtree(BvhNode& root, std::uint32_t begin, std::uint32_t end,
-                    const RangeBounds& bounds, int depth) {
+                    const RangeBounds& bounds, int depth, bool copiesDropped) {
     Subtree& subtree = subtrees_.local();
     // At most 2n - 2 nodes below the root.
     if (subtree.nodes.size() < 2 * std::size_t{end - begin})
       subtree.nodes.resize(2 * std::size_t{end - begin});
     subtree.used = 0;
     subtree.depth = 0;
-    build(root, begin, end, bounds, depth, &subtree);
+    build(root, begin, end, bounds, depth, &subtree, copiesDropped);
     const std::uint32_t base = nodeCount_.fetch_add(subtree.used);
     for (std::uint32_t i = 0; i < subtree.used; ++i) {
       BvhNode node = subtree.nodes[i];
@@ -427,18 +437,41 @@ class Builder {
     raiseDepth(subtree.depth);
   }
 
+  // Moves the spare copies among the triangles of [begin, end) (copies of
+  // two others there, triangle_copies.h) behind the others, which keep
+  // their order, and returns how many others there are. The spares' slots
+  // stay in the tree's order, but no leaf reaches them.
+  std::uint32_t dropSpareCopies(std::uint32_t begin, std::uint32_t end) {
+    std::vector<std::uint32_t> triangles(end - begin);
+    for (std::uint32_t k = begin; k < end; ++k) triangles[k - begin] = refs_[k].index();
+    const std::vector<char> spare = markSpareCopies(*mesh_, triangles);
+    std::vector<PrimRef> spares;
+    std::uint32_t kept = begin;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      if (spare[k - begin])
+        spares.push_back(refs_[k]);
+      else
+        refs_[kept++] = refs_[k];
+    }
+    std::copy(spares.begin(), spares.end(), refs_.data() + kept);
+    copies_ += static_cast<std::uint32_t>(spares.size());
+    return kept - begin;
+  }
+
   // Builds the subtree of `node`, which is in the tree or, when `subtree`
-  // is given, in its buffer.
+  // is given, in its buffer. `copiesDropped`: an ancestor has left out the
+  // spare copies among its primitives, so none are left among these.
   void build(BvhNode& node, std::uint32_t begin, std::uint32_t end, const RangeBounds& bounds,
-             int depth, Subtree* subtree) {
-    const std::uint32_t n = end - begin;
-    if (!subtree && n < kParallelSubtrees) return buildSubtree(node, begin, end, bounds, depth);
+             int depth, Subtree* subtree, bool copiesDropped) {
+    std::uint32_t n = end - begin;
+    if (!subtree && n < kParallelSubtrees)
+      return buildSubtree(node, begin, end, bounds, depth, copiesDropped);
     alignas(16) float lo[4], hi[4];
     _mm_store_ps(lo, bounds.box.lo);
     _mm_store_ps(hi, bounds.box.hi);
     std::copy(lo, lo + 3, node.bounds);
     std::copy(hi, hi + 3, node.bounds + 3);
-    const bool small = n <= static_cast<std::uint32_t>(options_.maxLeafSize);
+    bool small = n <= static_cast<std::uint32_t>(options_.maxLeafSize);
     if (n == 1) return makeLeaf(node, begin, end, depth, subtree);
     // A small node whose leaf costs no more than a node visit is a leaf
     // whatever split the bins would offer (a split costs that visit plus
@@ -459,6 +492,17 @@ class Builder {
       if (small && leafCost <= splitCost) return makeLeaf(node, begin, end, depth, subtree);
       mid = partition(begin, end, binner, split, stride > 1, left, right);
     } else {
+      // Copies have the same box, so only a node whose centroids all
+      // coincide can hold a set of them, and only such a node looks for
+      // them, the first on its path from the root: no split by bins
+      // separates copies, and a median split above it at most leaves a
+      // set's two lowest in different nodes, where each keeps them.
+      if (!small && mesh_ && !copiesDropped && !binner.usableAxis()) {
+        copiesDropped = true;
+        end = begin + dropSpareCopies(begin, end);
+        n = end - begin;
+        small = n <= static_cast<std::uint32_t>(options_.maxLeafSize);
+      }
       if (small) return makeLeaf(node, begin, end, depth, subtree);
       mid = medianSplit(begin, end, bounds.centroids, left, right);
     }
@@ -467,8 +511,12 @@ class Builder {
     BvhNode* children = subtree ? &subtree->nodes[child] : &out_.nodes[child];
     node.first = child;
     node.count = 0;
-    const auto buildLeft = [&] { build(children[0], begin, mid, left, depth + 1, subtree); };
-    const auto buildRight = [&] { build(children[1], mid, end, right, depth + 1, subtree); };
+    const auto buildLeft = [&] {
+      build(children[0], begin, mid, left, depth + 1, subtree, copiesDropped);
+    };
+    const auto buildRight = [&] {
+      build(children[1], mid, end, right, depth + 1, subtree, copiesDropped);
+    };
     if (n >= kParallelSubtrees) {
       tbb::parallel_invoke(buildLeft, buildRight);
     } else {
@@ -479,6 +527,7 @@ class Builder {
 
   const BvhBuildOptions& options_;
   Bvh& out_;
+  const Mesh* mesh_;
   int bins_;
   int blockShift_ = std::has_single_bit(static_cast<unsigned>(std::max(options_.leafBlock, 1)))
                         ? std::countr_zero(static_cast<unsigned>(std::max(options_.leafBlock, 1)))
@@ -486,6 +535,7 @@ class Builder {
   BuildVector<PrimRef> refs_;
   std::atomic<std::uint32_t> nodeCount_{1};
   std::atomic<int> depth_{0};
+  std::atomic<std::uint32_t> copies_{0};
   tbb::enumerable_thread_specific<Subtree> subtrees_;
 };
 
@@ -521,7 +571,8 @@ Bvh buildOneMesh(const Mesh& mesh, const BvhBuildOptions& options) {
     return FloatBox{_mm_min_ps(_mm_min_ps(a.lo, b.lo), c.lo),
                     _mm_max_ps(_mm_max_ps(a.hi, b.hi), c.hi)};
   };
-  Builder(triangles.size(), boxOf, options, bvh).run(static_cast<std::uint32_t>(triangles.size()));
+  Builder(triangles.size(), boxOf, options, bvh, &mesh)
+      .run(static_cast<std::uint32_t>(triangles.size()));
   return bvh;
 }
 
@@ -548,6 +599,7 @@ Bvh join(const Bvh& top, std::span<const Bvh> parts, std::span<const std::uint32
     }
     for (std::uint32_t i : parts[k].order) out.order.push_back(i + idOffset[k]);
     partDepth = std::max(partDepth, parts[k].depth);
+    out.copiesLeftOut += parts[k].copiesLeftOut;
   }
   // The parts' roots are copied into the leaves (their old slots stay
   // unreachable).

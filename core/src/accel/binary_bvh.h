@@ -33,6 +33,9 @@ struct Bvh {
   BuildVector<BvhNode> nodes;        // nodes[0] is the root; empty for no primitives
   std::vector<std::uint32_t> order;  // primitive indices, grouped by leaf
   int depth = 0;                     // longest root-to-leaf path (root = 1)
+  // Triangles no leaf holds, each a copy of two that leaves hold
+  // (triangle_copies.h); their slots in `order` are unused.
+  std::uint32_t copiesLeftOut = 0;
 
   bool empty() const { return nodes.empty(); }
   std::size_t bytes() const {
@@ -53,7 +56,8 @@ Bvh buildBvh(std::span<const Aabb> boxes, const BvhBuildOptions& options = {});
 // of the set), their boxes taken straight from the vertices: no array of
 // double boxes (48 bytes a triangle) to fill and read back. With several
 // meshes, each mesh's tree is built on its own, in parallel, and the trees
-// are joined under a tree over the meshes' boxes.
+// are joined under a tree over the meshes' boxes. Of a set of copies of a
+// triangle in one mesh, only the two lowest indices are in leaves.
 Bvh buildBvh(const TriangleSet& triangles, const BvhBuildOptions& options = {});
 
 // The largest depth a built tree can have (traversal stacks are this deep).

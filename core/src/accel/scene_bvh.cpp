@@ -35,10 +35,14 @@ Aabb cylinderBox(const Cylinder& c) {
   return {c.center - half, c.center + half};
 }
 
-void buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
-  out.tree = collapseToBvh8(buildBvh(out.triangles, options));
+// Returns how many triangles were left out as spare copies.
+std::size_t buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
+  Bvh binary = buildBvh(out.triangles, options);
+  const std::size_t copies = binary.copiesLeftOut;
+  out.tree = collapseToBvh8(std::move(binary));
   out.frame = blockFrame(out.triangles.bounds());
   out.blocks = makeTriangleBlocks(out.triangles, out.frame, out.tree);
+  return copies;
 }
 
 // Set bits of a 4-bit lane mask (std::popcount is a library call without
@@ -215,7 +219,12 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
                                std::to_string(n) + " triangles, under " +
                                std::to_string(options.minMeshTriangles));
   }
-  if (!meshBvh_.triangles.empty()) buildMeshBvh(options.mesh, meshBvh_);
+  if (!meshBvh_.triangles.empty()) stats_.copiesLeftOut = buildMeshBvh(options.mesh, meshBvh_);
+  if (stats_.copiesLeftOut > 0)
+    stats_.leftOut.push_back(
+        std::to_string(stats_.copiesLeftOut) +
+        " triangles out of the triangle BVH: exact copies (the same corners in the same order) "
+        "of two triangles it holds, which answer for them");
   meshBvh_.prefetch = !meshBvh_.empty() && meshBvh_.bytes() >= options.prefetchBytes;
   if (!meshBvh_.empty() && !meshBvh_.prefetch) {
     char why[128];

@@ -2,7 +2,8 @@
 // exactly one leaf, every box inside its parent's, every primitive inside its
 // leaf's box, whether the splits come from all of a node's primitives or a
 // sample of them, over one set of boxes or meshes' trees joined under one;
-// the same tree on one thread as on all; small leaves though boxes coincide.
+// the same tree on one thread as on all; small leaves though boxes coincide;
+// of a set of exact copies of a triangle, only the two lowest in leaves.
 #include "accel/binary_bvh.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "accel/triangle_copies.h"
 #include "accel/triangle_set.h"
 #include "meshtrace/geometry/mesh_generators.h"
 #include "support/meshes.h"
@@ -122,6 +124,31 @@ TEST(BinaryBvhBuild, SameTreeOnOneThreadAsOnAll) {
   EXPECT_EQ(all.nodes.size(), one.nodes.size());
   EXPECT_EQ(all.depth, one.depth);
   EXPECT_TRUE(all.order == one.order);
+}
+
+// Copies share their box, so nothing but their index tells them apart: of
+// each set, the two lowest indices are in exactly one leaf each and the
+// others, the spares, in none; every other triangle, the other corner
+// orders and the one-ulp neighbour among them, is in exactly one leaf.
+TEST(BinaryBvhBuild, CopiesLeaveOnlyTheTwoLowestOfEachSetInLeaves) {
+  const Mesh mesh = makeMesh("copies", test::withCopies(makeIcosphere(Vec3(0.0), 1.0, 1), 1, 6));
+  TriangleSet set;
+  set.add(mesh, 0);
+  const Bvh bvh = buildBvh(set, {.leafBlock = 4});
+  std::vector<int> seen(set.size(), 0);
+  for (const BvhNode& node : bvh.nodes)
+    if (node.isLeaf())
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) ++seen[bvh.order[k]];
+  std::vector<std::uint32_t> all(set.size());
+  for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  const std::vector<char> spare = markSpareCopies(mesh, all);
+  std::size_t spares = 0;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    ASSERT_EQ(seen[i], spare[i] ? 0 : 1) << "triangle " << i;
+    spares += spare[i];
+  }
+  EXPECT_EQ(spares, 80u * 11);  // twelve copies of each of the 80 triangles
+  EXPECT_EQ(bvh.copiesLeftOut, spares);
 }
 
 TEST(BinaryBvhBuild, CoincidentBoxesStillGiveSmallLeaves) {

@@ -4,7 +4,8 @@
 // directions included), the BVH must report the same primitive, t and
 // barycentrics, and its any-hit query must agree with the closest hit. Rays
 // spawned off the hits, told the triangle they leave, must agree too; so must
-// packets of four rays, and the BVH with children fetched ahead. Also the
+// packets of four rays, the BVH with children fetched ahead, and meshes full
+// of exact copies of their triangles, of which the BVH holds two. Also the
 // accel method's default, names and parsing.
 #include "meshtrace/accel/intersector.h"
 
@@ -24,6 +25,7 @@
 #include "accel/scene_bvh.h"
 #include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/render/spawn.h"
+#include "meshtrace/report/stability.h"
 #include "support/meshes.h"
 
 namespace meshtrace {
@@ -318,6 +320,67 @@ TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
     }
 }
 
+// Meshes full of exact copies of their triangles, of which the BVH holds
+// only the two lowest indices (triangle_copies.h), and near copies, which
+// it all holds: with every kernel, every query finds what brute force
+// finds.
+TEST(BvhAgreesWithBruteForce, TrianglesWithCopies) {
+  const Scene scene = meshScene(
+      {makeMesh("copies", test::withCopies(rotated(makeIcosphere(Vec3(0.1), 1.0, 1), 0.4), 1, 3))});
+  ASSERT_EQ(SceneBvh(scene).stats().copiesLeftOut, 80u * 5);  // seven copies of each, five spare
+  for (const TriangleKernel& k : allTriangleKernels()) {
+    const std::string label =
+        std::string("copies ") + toString(k.test) + "/" + toString(k.precision);
+    expectAgreement(label.c_str(), compare(scene, 20000, 13, k));
+  }
+}
+
+// A ray that leaves a triangle, told so, does not test it, but does test
+// its copies, and the second lowest of a set answers for them: rays from
+// points on a triangle, which the kernels without an error bound (Cramer,
+// Moller-Trumbore) often report as hitting the triangle itself at a t near
+// 0, must find that copy through the BVH as brute force does.
+TEST(BvhAgreesWithBruteForce, RaysLeavingATriangleMeetItsCopies) {
+  MeshData m;
+  m.vertices = {{0.1, 0.2, 0.3}, {1.3, 0.4, 0.1}, {0.2, 1.1, 0.7}};
+  m.triangles.assign(8, {0, 1, 2});
+  const Scene scene = meshScene({makeMesh("copies", std::move(m))});
+  const auto& v = scene.meshes[0].vertices();
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const TriangleKernel& k : allTriangleKernels()) {
+    const SceneIntersector bvh(scene, {.accel = AccelMethod::Bvh, .triangle = k});
+    const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = k});
+    ASSERT_EQ(bvh.bvhStats()->copiesLeftOut, 6u);
+    std::size_t selfHits = 0, differences = 0;
+    Counters c;
+    for (int i = 0; i < 20000; ++i) {
+      const double b = 0.5 * u(rng), g = 0.5 * u(rng);
+      const Ray ray{(1.0 - b - g) * v[0] + b * v[1] + g * v[2],
+                    glm::normalize(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5))};
+      TriangleHit th;
+      if (!TriangleRay(ray, k).intersect(v[0], v[1], v[2], 0.0, kInfinity, th)) continue;
+      ++selfHits;
+      // Leaving the lowest, the second answers; leaving another, the lowest.
+      for (std::uint32_t leaving : {0u, 1u, 5u}) {
+        const PrimitiveRef start{ObjectKind::Mesh, 0, leaving};
+        Hit a, h;
+        const bool fa = bvh.closestHit(ray, 0.0, a, c, &start);
+        const bool fh = brute.closestHit(ray, 0.0, h, c, &start);
+        differences += !fh || h.ref.triangle != (leaving == 0 ? 1u : 0u) ||
+                       !sameHit(fa, a, fh, h) || !bvh.occluded(ray, 0.0, 1.0, c, &start);
+      }
+    }
+    const std::string label = std::string(toString(k.test)) + "/" + toString(k.precision);
+    std::printf("[ figures  ] %-18s %zu rays from the triangle hit it again; differences %zu\n",
+                label.c_str(), selfHits, differences);
+    if (k.test != TriangleTest::Watertight) {
+      EXPECT_GT(selfHits, 0u) << label << ": no ray to tell the copies apart";
+    }
+    EXPECT_EQ(differences, 0u) << label;
+  }
+}
+
 // Whether two directions have the same octant (the sign bits, -0 included,
 // as the slab ray takes them).
 bool sameOctant(const Vec3& a, const Vec3& b) {
@@ -433,14 +496,16 @@ PacketCheck comparePackets(const Scene& scene, int packets, std::uint64_t seed,
 TEST(BvhPacket, FindsWhatBruteForceFindsForEachRay) {
   std::mt19937_64 rng(21);
   const MeshData ball = makeIcosphere(Vec3(0.0), 1.0, 2);
-  const Scene scenes[] = {
-      meshScene({makeMesh("knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6))}),
-      meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
-                 makeMesh("box", makeGriddedBox(Vec3(-0.5), Vec3(0.7), 3))}),
-      objectScene(rng)};
-  const char* labels[] = {"knot", "twin meshes", "objects"};
-  for (int i = 0; i < 3; ++i) {
-    const PacketCheck check = comparePackets(scenes[i], 40000, 31 + i);
+  const MeshData knot = makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.25, 48, 6);
+  const Scene scenes[] = {meshScene({makeMesh("knot", knot)}),
+                          meshScene({makeMesh("ball", ball), makeMesh("twin", ball),
+                                     makeMesh("box", makeGriddedBox(Vec3(-0.5), Vec3(0.7), 3))}),
+                          objectScene(rng),
+                          meshScene({makeMesh("copies", test::withCopies(knot, 4, 3))})};
+  const char* labels[] = {"knot", "twin meshes", "objects", "knot with copies"};
+  const int packets[] = {40000, 40000, 40000, 10000};
+  for (int i = 0; i < 4; ++i) {
+    const PacketCheck check = comparePackets(scenes[i], packets[i], 31 + i);
     std::printf(
         "[ figures  ] %-12s %llu rays in packets (%llu of %llu packets share an "
         "octant), %llu hits, %llu spawned hits; differences %llu; any-hit: %llu "

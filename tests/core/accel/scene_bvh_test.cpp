@@ -1,7 +1,8 @@
 // The scene's two-level BVH (scene_bvh): which meshes get a triangle BVH
 // and which are said to be left out, the large ones sharing one triangle BVH
 // that the top level holds as one object, each triangle block holding one
-// mesh's triangles, and at most 64 bytes of nodes and blocks per triangle.
+// mesh's triangles, at most 64 bytes of nodes and blocks per triangle, and
+// a mesh of one triangle listed a million times costing two triangles.
 #include "accel/scene_bvh.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "meshtrace/accel/intersector.h"
 #include "meshtrace/geometry/mesh_generators.h"
 #include "support/meshes.h"
 
@@ -94,6 +96,36 @@ TEST(SceneBvh, TakesAtMost64BytesPerTriangle) {
   const double together = bytesPerTriangle(scene);
   std::printf("both in one BVH: %.1f bytes per triangle\n", together);
   EXPECT_LE(together, 64.0);
+}
+
+// A million copies of one triangle (an OFF listing it a million times) are
+// two triangles to the BVH: a ray costs two triangle tests, not a million,
+// and --stats says what was left out.
+TEST(SceneBvh, AMillionCopiesOfATriangleCostTwoTestsARay) {
+  MeshData m;
+  m.vertices = {{-1.0, -1.0, 0.0}, {1.0, -1.0, 0.0}, {0.0, 1.0, 0.0}};
+  m.triangles.assign(1000000, {0, 1, 2});
+  Scene scene;
+  scene.meshes.push_back(makeMesh("copies.off", std::move(m)));
+  const SceneIntersector intersector(scene, {});
+  const SceneBvhStats& stats = *intersector.bvhStats();
+  EXPECT_EQ(stats.copiesLeftOut, 999998u);
+  bool said = false;
+  for (const std::string& item : stats.leftOut)
+    said |= item.rfind("999998 triangles out of the triangle BVH: exact copies", 0) == 0;
+  EXPECT_TRUE(said);
+  Counters counters;
+  std::size_t rays = 0, hits = 0;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 40; ++x, ++rays) {
+      const Ray ray{Vec3(-1.2 + 0.06 * x, -1.2 + 0.06 * y, 2.0), Vec3(0.0, 0.0, -1.0)};
+      Hit hit;
+      hits += intersector.closestHit(ray, 0.0, hit, counters);
+      EXPECT_FALSE(hit.found() && hit.ref.triangle != 0);
+      hits += intersector.occluded(ray, 0.0, kInfinity, counters);
+    }
+  EXPECT_GT(hits, rays / 2);
+  EXPECT_LE(counters.triangleTests, 4 * rays);  // two queries a ray
 }
 
 }  // namespace
