@@ -59,10 +59,15 @@ TEST(StabilityScale, SpawnedRaysNeverReHitTriangles) {
       EXPECT_EQ(r.primaryHits, 9u * kSamples) << label;
     }
     // The guarantee: the watertight test rejects t within its error bound.
-    // Cramer and Moller-Trumbore have no such bound; their figures are
-    // reported (0 in double, 1 in 6177 in single when last measured).
+    // Cramer and Moller-Trumbore have no such bound; in double the offset
+    // alone keeps their spawned rays off the surface here, in single all
+    // but rarely (one ray in 6177 when measured). Rays that start on the
+    // surface itself re-hit it nearly half the time, so a rate above one
+    // in a thousand means the offset no longer works.
     if (k.test == TriangleTest::Watertight || k.precision == Precision::Double) {
       EXPECT_EQ(r.reHits, 0u) << label;
+    } else {
+      EXPECT_LE(r.reHits * 1000, r.spawned) << label;
     }
   }
 }
@@ -103,11 +108,10 @@ TEST(StabilityScale, RenderIsInvariantUnderTranslationAndScale) {
     for (std::size_t i = 0; i < moved.rgb.size(); ++i) differ += moved.rgb[i] != reference.rgb[i];
     std::printf("[ figures  ] scale %-6g offset %-6g RMSE %.3f  max %d  channels differing %zu\n",
                 c.scale, c.offset, d.rmse, d.maxDifference, differ);
-    // Rays through silhouettes and shared edges may round differently at
-    // other coordinates (a scene of size 1e-4 at 1e6 keeps only ~33 bits of
-    // its coordinates); whole regions may not: acne or a lost contact shadow
-    // would touch hundreds of the 6912 pixels. Measured: identical images.
-    EXPECT_LE(differ, moved.rgb.size() / 1000) << "scale " << c.scale << " offset " << c.offset;
+    // Measured: identical images. Acne or a lost contact shadow would
+    // change hundreds of the 6912 pixels, a rounding decision flipped on a
+    // silhouette or a shared edge a few; here not even those may differ.
+    EXPECT_EQ(differ, 0u) << "scale " << c.scale << " offset " << c.offset;
   }
 }
 

@@ -34,9 +34,15 @@ TEST(StabilityWatertight, LeaksPerAlgorithm) {
         leaks += r.leaks;
       }
     }
-    // The watertight test may never leak, in either precision.
+    // The watertight test may never leak, in either precision. Cramer and
+    // Moller-Trumbore decide a shared edge twice, with different roundings,
+    // and do leak where the rays are aimed: that they are seen to leak
+    // shows the rays hit the edges and vertices, so the watertight zero
+    // means something.
     if (k.test == TriangleTest::Watertight) {
       EXPECT_EQ(leaks, 0u) << toString(k.precision);
+    } else {
+      EXPECT_GT(leaks, 0u) << toString(k.test) << " " << toString(k.precision);
     }
   }
 }
