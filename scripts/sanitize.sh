@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer
-# (MESHTRACE_SANITIZE) into build-asan/ and runs the whole test suite once.
-# Any sanitizer report fails the run.
+# Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer,
+# float-cast-overflow included (MESHTRACE_SANITIZE), into build-asan/ and
+# runs the whole test suite once. Any sanitizer report fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMESHTRACE_SANITIZE=ON >/dev/null
