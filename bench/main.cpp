@@ -14,6 +14,7 @@
 #include "bench/crossover.h"
 #include "bench/embree_intersector.h"
 #include "bench/full_run.h"
+#include "bench/mesh_load.h"
 #include "bench/mesh_scenes.h"
 #include "bench/rays.h"
 #include "meshtrace/accel/intersector.h"
@@ -427,7 +428,7 @@ void printSummary(const std::vector<SceneFigures>& all) {
 int main(int argc, char** argv) {
   CLI::App cli{"Benchmark our BVH against Embree 3 (see BENCHMARKS.md)."};
   std::vector<std::string> scenes;
-  std::string makeScene, makeKnot, outDir = "bench-data/out";
+  std::string makeScene, makeKnot, meshLoad, outDir = "bench-data/out";
   std::size_t knotTriangles = 1'000'000;
   int threads = static_cast<int>(std::thread::hardware_concurrency());
   bool fast = false, crossover = false;
@@ -439,6 +440,8 @@ int main(int argc, char** argv) {
   cli.add_option("--make-scene", makeScene, "Write MESH.sce framing MESH.off, and exit");
   cli.add_option("--make-knot", makeKnot, "Write a generated torus knot OFF, and exit");
   cli.add_option("--triangles", knotTriangles, "Triangles of --make-knot")->capture_default_str();
+  cli.add_option("--mesh-load", meshLoad,
+                 "Time loading MESH.off and the same mesh as binary PLY, and exit");
   cli.add_flag("--crossover", crossover, "Measure the mesh size at which a BVH pays, and exit");
   // The child process of a whole-run measurement (full_run.h).
   std::string fullRun, image;
@@ -459,6 +462,10 @@ int main(int argc, char** argv) {
     }
     if (!makeScene.empty()) {
       writeMeshScene(makeScene, std::filesystem::path(makeScene).replace_extension(".sce"));
+      return 0;
+    }
+    if (!meshLoad.empty()) {
+      printMeshLoadTimes(meshLoad);
       return 0;
     }
     if (crossover) {

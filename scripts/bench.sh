@@ -59,3 +59,4 @@ fi
 
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
 "$bench" "$@" "${scenes[@]}"
+"$bench" --mesh-load "$data/knot1m.off"

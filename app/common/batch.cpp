@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "formats/openmesh_reader.h"
 #include "meshtrace/io/image.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/output_file.h"
@@ -77,6 +78,7 @@ std::uint64_t imageBytes(int width, int height) {
 
 std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget) {
   const auto start = std::chrono::steady_clock::now();
+  formats::registerOpenMeshFormats();
   try {
     Scene scene = loadScene(file, budget);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());

@@ -11,7 +11,7 @@
 #include "io/text.h"
 #include "io/token_stream.h"
 #include "meshtrace/io/input_error.h"
-#include "meshtrace/io/off_reader.h"
+#include "meshtrace/io/mesh_reader.h"
 
 namespace meshtrace {
 
@@ -235,7 +235,7 @@ class SceneParser {
     tbb::parallel_for(std::size_t{0}, lines.size(), [&](std::size_t i) {
       const MeshLine& m = lines[i];
       try {
-        MeshData data = readOff(m.file, budget_);
+        MeshData data = readMesh(m.file, budget_);
         budget_.reserve(normalsBytes(data, m.shading), "load",
                         "the normals of " + m.file.filename().string());
         loaded[i].emplace(m.file, std::move(data), m.shading, m.material);

@@ -1,0 +1,191 @@
+#include "formats/openmesh_reader.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <algorithm>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "meshtrace/io/input_error.h"
+#include "meshtrace/io/mesh_reader.h"
+
+namespace meshtrace::formats {
+
+namespace {
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+};
+// Holds the points and, per face, a handle for the readers' face attributes.
+using PointMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
+
+// What the importer keeps per vertex (the point and OpenMesh's outgoing
+// halfedge handle, then the copy in MeshData) and per face (a halfedge
+// handle): planned in the budget before the arrays grow.
+constexpr std::uint64_t kBytesPerVertex = sizeof(OpenMesh::Vec3d) + 4 + sizeof(Vec3);
+constexpr std::uint64_t kBytesPerFace = 4;
+constexpr std::size_t kFirstBlock = 4096;
+
+// Takes each face's corners as OFF's reader does (fan triangles) instead
+// of building OpenMesh's halfedge topology, which drops or splits the
+// faces a non-manifold mesh has. Ignores the readers' reserve calls: they
+// pass counts from the file's header, unchecked.
+class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
+ public:
+  CornerImporter(PointMesh& mesh, MeshData& out, MemoryBudget& budget, std::string name)
+      : ImporterT(mesh), mesh_(mesh), out_(out), budget_(budget), name_(std::move(name)) {}
+
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
+    return add_vertex(OpenMesh::Vec3d(p));
+  }
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override {
+    planVertex();
+    return ImporterT::add_vertex(p);
+  }
+  OpenMesh::VertexHandle add_vertex() override {
+    planVertex();
+    return ImporterT::add_vertex();
+  }
+
+  OpenMesh::FaceHandle add_face(const VHandles& corners) override {
+    const std::size_t face = faces_++;
+    if (!problem_.empty()) return OpenMesh::FaceHandle();
+    if (corners.size() < 3) {
+      problem_ = "face " + std::to_string(face) + " has " + std::to_string(corners.size()) +
+                 " corners; at least 3 are needed";
+      return OpenMesh::FaceHandle();
+    }
+    for (const OpenMesh::VertexHandle& c : corners) {
+      if (!c.is_valid() || static_cast<std::size_t>(c.idx()) >= mesh_.n_vertices()) {
+        problem_ = "face " + std::to_string(face) + " refers to vertex " + std::to_string(c.idx()) +
+                   " of " + std::to_string(mesh_.n_vertices());
+        return OpenMesh::FaceHandle();
+      }
+    }
+    planTriangles(corners.size() - 2);
+    const auto index = [](OpenMesh::VertexHandle h) { return static_cast<std::uint32_t>(h.idx()); };
+    for (std::size_t k = 2; k < corners.size(); ++k)
+      out_.triangles.push_back({index(corners[0]), index(corners[k - 1]), index(corners[k])});
+    return mesh_.new_face();
+  }
+
+  // Texture coordinates walk a face's halfedges, which these faces lack.
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>&) override {}
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec3f>&) override {}
+  void reserve(unsigned int, unsigned int, unsigned int) override {}
+
+  // The first face found wrong, or "".
+  const std::string& problem() const { return problem_; }
+
+ private:
+  void planVertex() {
+    if (mesh_.n_vertices() < plannedVertices_) return;
+    const std::size_t more = std::max(kFirstBlock, plannedVertices_);
+    budget_.reserve(more * kBytesPerVertex, "load",
+                    "the " + std::to_string(plannedVertices_ + more) + " vertices of " + name_);
+    plannedVertices_ += more;
+    mesh_.reserve(plannedVertices_, 0, plannedFaces_);
+  }
+  void planTriangles(std::size_t count) {
+    if (out_.triangles.size() + count <= out_.triangles.capacity() &&
+        mesh_.n_faces() < plannedFaces_)
+      return;
+    const std::size_t more = std::max({kFirstBlock, out_.triangles.capacity(), count});
+    // The old and the new triangle array while it grows, and the faces.
+    budget_.reserve(
+        (out_.triangles.capacity() + more) * sizeof(TriangleIndices) + more * kBytesPerFace, "load",
+        "the " + std::to_string(out_.triangles.size() + more) + " triangles of " + name_);
+    budget_.release(out_.triangles.capacity() * sizeof(TriangleIndices));
+    out_.triangles.reserve(out_.triangles.capacity() + more);
+    plannedFaces_ += more;
+    mesh_.reserve(plannedVertices_, 0, plannedFaces_);
+  }
+
+  PointMesh& mesh_;
+  MeshData& out_;
+  MemoryBudget& budget_;
+  std::string name_;
+  std::size_t plannedVertices_ = 0;
+  std::size_t plannedFaces_ = 0;
+  std::size_t faces_ = 0;
+  std::string problem_;
+};
+
+// OpenMesh's readers keep the state of a read in their (global) instances
+// and report through its global streams: one read at a time.
+std::mutex& readLock() {
+  static std::mutex lock;
+  return lock;
+}
+
+// Collects what OpenMesh's readers say while one reads.
+class CapturedMessages {
+ public:
+  CapturedMessages() {
+    ::omerr().disconnect(std::cerr);
+    ::omerr().connect(text_);
+    ::omlog().disable();
+    ::omout().disable();
+  }
+  ~CapturedMessages() {
+    ::omerr().flush();
+    ::omerr().disconnect(text_);
+  }
+  // The first line said, without the reader's trailing punctuation.
+  std::string firstLine() {
+    ::omerr().flush();
+    std::string line;
+    std::getline(text_, line);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.'))
+      line.pop_back();
+    return line;
+  }
+
+ private:
+  std::stringstream text_;
+};
+}  // namespace
+
+void registerOpenMeshFormats() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (const char* extension : {".ply", ".obj", ".stl", ".om"})
+      registerMeshReader(extension, readOpenMeshFile);
+  });
+}
+
+MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budget) {
+  MeshData out;
+  PointMesh mesh;
+  std::string problem;
+  std::string said;
+  bool read = false;
+  {
+    const std::lock_guard<std::mutex> hold(readLock());
+    CapturedMessages messages;
+    CornerImporter importer(mesh, out, budget, file.filename().string());
+    OpenMesh::IO::Options options;
+    read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
+    problem = importer.problem();
+    said = messages.firstLine();
+  }
+  if (!problem.empty()) throw InputError::inFile(file, problem);
+  if (!read) {
+    if (!std::filesystem::is_regular_file(file))
+      throw InputError::inFile(file, "cannot open the mesh file");
+    throw InputError::inFile(file, said.empty() ? "OpenMesh cannot read this file" : said);
+  }
+  out.vertices.reserve(mesh.n_vertices());
+  for (const PointMesh::VertexHandle v : mesh.vertices()) {
+    const OpenMesh::Vec3d& p = mesh.point(v);
+    out.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  // OpenMesh's copy of the points goes with `mesh`.
+  budget.release(mesh.n_vertices() * (kBytesPerVertex - sizeof(Vec3)));
+  return out;
+}
+
+}  // namespace meshtrace::formats

@@ -1,0 +1,25 @@
+#pragma once
+// PLY (ASCII and binary), OBJ, STL (ASCII and binary) and OM meshes through
+// OpenMesh's readers. A library of its own, so that the core never depends
+// on OpenMesh: the tools link it and register its readers at start.
+#include <filesystem>
+
+#include "meshtrace/geometry/mesh.h"
+#include "meshtrace/io/memory_budget.h"
+
+namespace meshtrace::formats {
+
+// Registers readOpenMeshFile for .ply, .obj, .stl and .om (registerMeshReader);
+// only the first call does, so every loader may call it first.
+void registerOpenMeshFormats();
+
+// Reads a mesh with the OpenMesh reader of its extension, polygons
+// fan-triangulated as OFF's are. Only the faces' corners are taken: no
+// topology is built, so a non-manifold mesh keeps every face. STL lists
+// each triangle's corners apart; its reader merges equal points, so the
+// vertices are shared as in an indexed mesh. Throws InputError naming the
+// file (and the element where known) on bad input; reserves its arrays in
+// `budget` before allocating them.
+MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budget);
+
+}  // namespace meshtrace::formats

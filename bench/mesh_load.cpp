@@ -1,0 +1,85 @@
+#include "bench/mesh_load.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "formats/openmesh_reader.h"
+#include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/off_reader.h"
+#include "meshtrace/io/output_file.h"
+
+namespace meshtrace::bench {
+
+namespace {
+constexpr int kRounds = 5;
+
+template <typename T>
+void append(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+// Float coordinates and int indices, as scanners and exporters write them.
+void writeBinaryPly(const MeshData& mesh, const std::filesystem::path& ply) {
+  std::string out = "ply\nformat binary_little_endian 1.0\nelement vertex " +
+                    std::to_string(mesh.vertices.size()) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                    std::to_string(mesh.triangles.size()) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+  out.reserve(out.size() + mesh.vertices.size() * 12 + mesh.triangles.size() * 13);
+  for (const Vec3& v : mesh.vertices)
+    for (int k = 0; k < 3; ++k) append(out, static_cast<float>(v[k]));
+  for (const TriangleIndices& t : mesh.triangles) {
+    append(out, std::uint8_t{3});
+    for (std::uint32_t i : t) append(out, static_cast<std::int32_t>(i));
+  }
+  writeFileAtomically(ply, out);
+}
+
+double loadMs(const std::filesystem::path& file, std::size_t expectedTriangles) {
+  MemoryBudget budget(defaultMemoryLimit());
+  const auto start = std::chrono::steady_clock::now();
+  const MeshData mesh = readMesh(file, budget);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (mesh.triangles.size() != expectedTriangles)
+    throw std::runtime_error(file.string() + " loaded " + std::to_string(mesh.triangles.size()) +
+                             " triangles, not " + std::to_string(expectedTriangles));
+  return ms;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+}  // namespace
+
+void printMeshLoadTimes(const std::filesystem::path& off) {
+  formats::registerOpenMeshFormats();
+  const MeshData mesh = readOff(off);
+  auto ply = off;
+  ply.replace_extension(".ply");
+  if (!std::filesystem::exists(ply)) writeBinaryPly(mesh, ply);
+  std::vector<double> offMs, plyMs;
+  for (int round = 0; round < kRounds; ++round) {  // interleaved: both see the same load
+    offMs.push_back(loadMs(off, mesh.triangles.size()));
+    plyMs.push_back(loadMs(ply, mesh.triangles.size()));
+  }
+  const double a = median(offMs), b = median(plyMs);
+  std::printf("\n### Loading %s: %zu triangles, median of %d loads\n\n", off.stem().c_str(),
+              mesh.triangles.size(), kRounds);
+  std::printf("| file | bytes | load ms | against OFF |\n|---|---|---|---|\n");
+  std::printf("| OFF (ours) | %ju | %.1f | 1.00 |\n",
+              static_cast<std::uintmax_t>(std::filesystem::file_size(off)), a);
+  std::printf("| binary PLY (OpenMesh) | %ju | %.1f | %.2f |\n",
+              static_cast<std::uintmax_t>(std::filesystem::file_size(ply)), b, b / a);
+}
+
+}  // namespace meshtrace::bench

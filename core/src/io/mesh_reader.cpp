@@ -1,0 +1,48 @@
+#include "meshtrace/io/mesh_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+#include "meshtrace/io/off_reader.h"
+
+namespace meshtrace {
+
+namespace {
+std::string lowercase(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+std::map<std::string, MeshReader>& readers() {
+  static std::map<std::string, MeshReader> byExtension = {
+      {".off", [](const std::filesystem::path& file, MemoryBudget& budget) {
+         return readOff(file, budget);
+       }}};
+  return byExtension;
+}
+}  // namespace
+
+void registerMeshReader(std::string_view extension, MeshReader reader) {
+  readers()[lowercase(extension)] = std::move(reader);
+}
+
+std::vector<std::string> meshExtensions() {
+  std::vector<std::string> out;
+  for (const auto& [extension, reader] : readers()) out.push_back(extension);
+  return out;
+}
+
+bool isMeshFile(const std::filesystem::path& file) {
+  return readers().count(lowercase(file.extension().string())) != 0;
+}
+
+MeshData readMesh(const std::filesystem::path& file, MemoryBudget& budget) {
+  const auto found = readers().find(lowercase(file.extension().string()));
+  if (found == readers().end()) return readOff(file, budget);
+  return found->second(file, budget);
+}
+
+}  // namespace meshtrace
