@@ -114,6 +114,39 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
   std::string problem_;
 };
 
+// OM files store the halfedge structure: their faces come with halfedges
+// rather than corner lists. Walks each face's loop (checking every handle
+// against the arrays, and stopping after as many steps as there are
+// halfedges) into fan triangles; returns what is wrong, or "".
+std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out) {
+  const auto halfedges = static_cast<int>(mesh.n_halfedges());
+  const auto vertices = static_cast<int>(mesh.n_vertices());
+  std::vector<std::uint32_t> corners;
+  for (int f = 0; f < static_cast<int>(mesh.n_faces()); ++f) {
+    const std::string face = "face " + std::to_string(f);
+    const auto first = mesh.halfedge_handle(OpenMesh::FaceHandle(f));
+    if (!(first.idx() >= 0 && first.idx() < halfedges)) return face + " has no halfedge";
+    corners.clear();
+    auto h = first;
+    do {
+      const auto v = mesh.to_vertex_handle(h);
+      if (!(v.idx() >= 0 && v.idx() < vertices))
+        return face + " refers to vertex " + std::to_string(v.idx()) + " of " +
+               std::to_string(vertices);
+      corners.push_back(static_cast<std::uint32_t>(v.idx()));
+      h = mesh.next_halfedge_handle(h);
+      if (!(h.idx() >= 0 && h.idx() < halfedges)) return face + ": its halfedge loop is broken";
+      if (corners.size() > static_cast<std::size_t>(halfedges))
+        return face + ": its halfedge loop does not close";
+    } while (h != first);
+    if (corners.size() < 3)
+      return face + " has " + std::to_string(corners.size()) + " corners; at least 3 are needed";
+    for (std::size_t k = 2; k < corners.size(); ++k)
+      out.triangles.push_back({corners[0], corners[k - 1], corners[k]});
+  }
+  return "";
+}
+
 // OpenMesh's readers keep the state of a read in their (global) instances
 // and report through its global streams: one read at a time.
 std::mutex& readLock() {
@@ -133,6 +166,7 @@ class CapturedMessages {
   ~CapturedMessages() {
     ::omerr().flush();
     ::omerr().disconnect(text_);
+    ::omerr().connect(std::cerr);
   }
   // The first line said, without the reader's trailing punctuation.
   std::string firstLine() {
@@ -171,6 +205,13 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
     read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
     problem = importer.problem();
     said = messages.firstLine();
+  }
+  if (read && problem.empty() && out.triangles.empty() && mesh.n_faces() > 0) {
+    // A face's loop has at most n_halfedges corners: the triangles are fewer.
+    budget.reserve(mesh.n_halfedges() * sizeof(TriangleIndices), "load",
+                   "the triangles of the " + std::to_string(mesh.n_faces()) + " faces of " +
+                       file.filename().string());
+    problem = collectHalfedgeFaces(mesh, out);
   }
   if (!problem.empty()) throw InputError::inFile(file, problem);
   if (!read) {

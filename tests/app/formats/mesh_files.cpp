@@ -1,10 +1,13 @@
 #include "app/formats/mesh_files.h"
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace meshtrace::test {
@@ -40,6 +43,21 @@ std::string plyHeader(const MeshData& mesh, const char* format) {
          "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
          std::to_string(mesh.triangles.size()) +
          "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+std::string omBytes(const MeshData& mesh) {
+  OpenMesh::PolyMesh_ArrayKernelT<> om;
+  std::vector<OpenMesh::VertexHandle> handles;
+  for (const Vec3& v : mesh.vertices)
+    handles.push_back(om.add_vertex(OpenMesh::Vec3f(
+        static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z))));
+  for (const TriangleIndices& t : mesh.triangles)
+    if (!om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid())
+      throw std::runtime_error("OM test meshes must be manifold");
+  std::ostringstream out;
+  if (!OpenMesh::IO::write_mesh(om, out, ".om", OpenMesh::IO::Options::Binary))
+    throw std::runtime_error("OpenMesh cannot write OM");
+  return out.str();
 }
 
 // A line per vertex, then "3 i j k" per triangle: OFF's body, and ASCII PLY's.
@@ -82,6 +100,7 @@ std::string meshBytes(const MeshData& mesh, MeshFormat format) {
         out += "    endloop\n  endfacet\n";
       }
       return out + "endsolid tests\n";
+    case MeshFormat::Om: return omBytes(mesh);
     case MeshFormat::StlBinary:
       out.assign(80, ' ');
       putLittleEndian(out, static_cast<std::uint32_t>(mesh.triangles.size()));
@@ -111,6 +130,7 @@ std::string formatName(MeshFormat format) {
     case MeshFormat::Obj: return "obj";
     case MeshFormat::StlAscii: return "stl-ascii";
     case MeshFormat::StlBinary: return "stl-binary";
+    case MeshFormat::Om: return "om";
   }
   return "?";
 }
@@ -123,6 +143,7 @@ std::string formatExtension(MeshFormat format) {
     case MeshFormat::Obj: return ".obj";
     case MeshFormat::StlAscii:
     case MeshFormat::StlBinary: return ".stl";
+    case MeshFormat::Om: return ".om";
   }
   return "";
 }

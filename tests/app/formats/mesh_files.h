@@ -1,6 +1,7 @@
 #pragma once
 // The same mesh written in each format, by hand from the formats' specs,
-// independently of the readers under test.
+// independently of the readers under test; OM, OpenMesh's own binary
+// halfedge format, by OpenMesh's writer.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -9,7 +10,7 @@
 
 namespace meshtrace::test {
 
-enum class MeshFormat { Off, PlyAscii, PlyBinary, Obj, StlAscii, StlBinary };
+enum class MeshFormat { Off, PlyAscii, PlyBinary, Obj, StlAscii, StlBinary, Om };
 
 // Every format, and its name for test output ("ply-binary").
 const std::vector<MeshFormat>& allMeshFormats();
