@@ -10,6 +10,8 @@
 #include "formats/openmesh_reader.h"
 #include "meshtrace/io/image.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/mesh_scene.h"
 #include "meshtrace/io/output_file.h"
 #include "meshtrace/io/scene_parser.h"
 
@@ -76,11 +78,21 @@ std::uint64_t imageBytes(int width, int height) {
          (sizeof(Color) + 3);
 }
 
+namespace {
+// ".off, .om, .ply": the mesh files the tools read.
+std::string extensionList() {
+  std::string out;
+  for (const std::string& e : meshExtensions()) out += (out.empty() ? "" : ", ") + e;
+  return out;
+}
+}  // namespace
+
 std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget) {
   const auto start = std::chrono::steady_clock::now();
   formats::registerOpenMeshFormats();
   try {
-    Scene scene = loadScene(file, budget);
+    Scene scene = isMeshFile(file) && !isSceneFile(file) ? loadMeshAsScene(file, budget)
+                                                         : loadScene(file, budget);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::printf(
         "loaded %s: %zu objects (%zu spheres, %zu planes, %zu cylinders, %zu meshes), "
@@ -100,6 +112,22 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBu
     printMemoryError(file, MemoryLimitError::outOfMemory("load", "the scene", budget.planned()));
     return std::nullopt;
   }
+}
+
+bool printMeshScene(const std::filesystem::path& mesh, std::uint64_t memoryLimit) {
+  formats::registerOpenMeshFormats();
+  MemoryBudget budget(memoryLimit);
+  try {
+    if (isSceneFile(mesh) || !isMeshFile(mesh))
+      throw InputError::inFile(mesh, "not a mesh file (one of " + extensionList() + ")");
+    std::fputs(meshSceneText(mesh, budget).c_str(), stdout);
+    return true;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const MemoryLimitError& e) {
+    printMemoryError(mesh, e);
+  }
+  return false;
 }
 
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,

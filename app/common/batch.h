@@ -36,10 +36,15 @@ std::uint64_t imageBytes(int width, int height);
 std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
                                               std::error_code& ec);
 
-// Loads a scene within `budget`, prints its warnings and a one-line summary
+// Loads a scene within `budget` (a mesh file is framed as one:
+// loadMeshAsScene), prints its warnings and a one-line summary
 // with the load time. Prints the error and returns nothing on bad input or
 // when the scene needs more memory than the budget allows.
 std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBudget& budget);
+
+// Prints the .sce text a bare mesh file is rendered as (meshSceneText),
+// to be saved beside it. Prints the error and returns false on bad input.
+bool printMeshScene(const std::filesystem::path& mesh, std::uint64_t memoryLimit);
 
 // What a tool does with one loaded scene, within the scene's budget.
 using SceneJob =

@@ -125,7 +125,12 @@ int main(int argc, char** argv) {
                "Print work counters, the memory planned and what the scene left out");
   std::string maxMemory;
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
-  cli.add_option("args", args, "SCENE.sce OUT.png, or with --all: [DIR] [OUTDIR]");
+  bool printScene = false;
+  cli.add_flag("--print-scene", printScene,
+               "Print the .sce a bare MESH file renders as (save it beside the mesh to edit it)");
+  cli.add_option("args", args,
+                 "SCENE.sce OUT.png (or a mesh file: .off, .ply, .obj, .stl, .om, framed), or "
+                 "with --all: [DIR] [OUTDIR]");
   CLI11_PARSE(cli, argc, argv);
 
   try {
@@ -137,6 +142,13 @@ int main(int argc, char** argv) {
   }
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
+  if (printScene) {
+    if (args.size() != 1) {
+      std::fprintf(stderr, "error: --print-scene takes one MESH file\n");
+      return 2;
+    }
+    return app::printMeshScene(args[0], *memoryLimit) ? 0 : 1;
+  }
   if (!reportDir.empty()) {
     if (args.empty()) {
       std::fprintf(stderr, "error: --report DIR needs at least one SCENE.sce\n");

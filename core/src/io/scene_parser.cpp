@@ -307,10 +307,14 @@ class SceneParser {
 };
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::filesystem::path& file) {
+Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget) {
   text::TokenStream words(text, file);
-  MemoryBudget budget(defaultMemoryLimit());
   return SceneParser(words, file, budget).parse();
+}
+
+Scene parseScene(std::string_view text, const std::filesystem::path& file) {
+  MemoryBudget budget(defaultMemoryLimit());
+  return parseScene(text, file, budget);
 }
 
 Scene loadScene(const std::filesystem::path& file, MemoryBudget& budget) {

@@ -19,6 +19,8 @@ Scene loadScene(const std::filesystem::path& file);
 
 // Parses scene text that claims to come from `file` (used for messages and
 // for resolving mesh paths).
+Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget);
+// With a budget of defaultMemoryLimit().
 Scene parseScene(std::string_view text, const std::filesystem::path& file);
 
 }  // namespace meshtrace
