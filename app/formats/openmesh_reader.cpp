@@ -1,13 +1,19 @@
 #include "formats/openmesh_reader.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <algorithm>
+#include <cctype>
 #include <mutex>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "formats/file_checks.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
 
@@ -147,6 +153,51 @@ std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out) {
   return "";
 }
 
+// Meshes beyond this are refused, as OFF's are.
+constexpr std::uintmax_t kMaxMeshBytes = std::uintmax_t{4} << 30;
+
+// The file mapped read-only for its check: nothing is allocated for it.
+class MappedFile {
+ public:
+  explicit MappedFile(const std::filesystem::path& file) {
+    fd_ = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) throw InputError::inFile(file, "cannot open the mesh file");
+    struct stat info {};
+    if (::fstat(fd_, &info) != 0 || !S_ISREG(info.st_mode))
+      throw InputError::inFile(file, "not a regular file");
+    size_ = static_cast<std::size_t>(info.st_size);
+    if (size_ == 0) throw InputError::inFile(file, "empty file");
+    if (size_ > kMaxMeshBytes)
+      throw InputError::inFile(file, "larger than the " + formatBytes(kMaxMeshBytes) + " accepted");
+    data_ = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd_, 0);
+    if (data_ == MAP_FAILED) throw InputError::inFile(file, "cannot map the mesh file");
+  }
+  ~MappedFile() {
+    if (data_ != MAP_FAILED) ::munmap(data_, size_);
+    if (fd_ >= 0) ::close(fd_);
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+
+  std::string_view bytes() const { return {static_cast<const char*>(data_), size_}; }
+
+ private:
+  int fd_ = -1;
+  void* data_ = MAP_FAILED;
+  std::size_t size_ = 0;
+};
+
+// What OpenMesh's reader of `file`'s extension must not be handed.
+void checkBeforeReading(const std::filesystem::path& file) {
+  const MappedFile mapped(file);
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".ply") checkPly(file, mapped.bytes());
+  if (extension == ".stl") checkStl(file, mapped.bytes());
+  if (extension == ".obj") checkObj(file, mapped.bytes());
+  if (extension == ".om") checkOm(file, mapped.bytes());
+}
+
 // OpenMesh's readers keep the state of a read in their (global) instances
 // and report through its global streams: one read at a time.
 std::mutex& readLock() {
@@ -154,33 +205,14 @@ std::mutex& readLock() {
   return lock;
 }
 
-// Collects what OpenMesh's readers say while one reads.
-class CapturedMessages {
- public:
-  CapturedMessages() {
-    ::omerr().disconnect(std::cerr);
-    ::omerr().connect(text_);
-    ::omlog().disable();
-    ::omout().disable();
-  }
-  ~CapturedMessages() {
-    ::omerr().flush();
-    ::omerr().disconnect(text_);
-    ::omerr().connect(std::cerr);
-  }
-  // The first line said, without the reader's trailing punctuation.
-  std::string firstLine() {
-    ::omerr().flush();
-    std::string line;
-    std::getline(text_, line);
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.'))
-      line.pop_back();
-    return line;
-  }
-
- private:
-  std::stringstream text_;
-};
+// OpenMesh's readers print to its global streams; the checks before them
+// say what is wrong instead. (Capturing the streams is no option: their
+// disconnect() leaks the target it removes.)
+void silenceOpenMesh() {
+  ::omerr().disable();
+  ::omlog().disable();
+  ::omout().disable();
+}
 }  // namespace
 
 void registerOpenMeshFormats() {
@@ -192,19 +224,18 @@ void registerOpenMeshFormats() {
 }
 
 MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budget) {
+  checkBeforeReading(file);
   MeshData out;
   PointMesh mesh;
   std::string problem;
-  std::string said;
   bool read = false;
   {
     const std::lock_guard<std::mutex> hold(readLock());
-    CapturedMessages messages;
+    silenceOpenMesh();
     CornerImporter importer(mesh, out, budget, file.filename().string());
     OpenMesh::IO::Options options;
     read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
     problem = importer.problem();
-    said = messages.firstLine();
   }
   if (read && problem.empty() && out.triangles.empty() && mesh.n_faces() > 0) {
     // A face's loop has at most n_halfedges corners: the triangles are fewer.
@@ -215,9 +246,7 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
   }
   if (!problem.empty()) throw InputError::inFile(file, problem);
   if (!read) {
-    if (!std::filesystem::is_regular_file(file))
-      throw InputError::inFile(file, "cannot open the mesh file");
-    throw InputError::inFile(file, said.empty() ? "OpenMesh cannot read this file" : said);
+    throw InputError::inFile(file, "OpenMesh's reader cannot read this file");
   }
   out.vertices.reserve(mesh.n_vertices());
   for (const PointMesh::VertexHandle v : mesh.vertices()) {

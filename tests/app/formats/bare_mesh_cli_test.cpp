@@ -92,7 +92,7 @@ TEST_F(BareMeshCli, RendersTheMeshFramedAndPrintsTheSameSceneAsText) {
 TEST_F(BareMeshCli, PrintSceneRefusesWhatIsNotAMesh) {
   test::writeFile(dir_ / "bad.obj", "v 0 0 0\nf 1 2 3\n");
   test::expectRefusal(test::raytraceTool(), {"--print-scene", path("bad.obj")}, dir_,
-                      {"bad.obj", "face 0", "vertex 1"}, {});
+                      {"bad.obj:2", "face 0", "'2'"}, {});
   test::writeFile(dir_ / "a.sce", "camera 0 0 5 0 0 0 0 1 0 40 8 6\n");
   test::expectRefusal(test::raytraceTool(), {"--print-scene", path("a.sce")}, dir_,
                       {"a.sce", "not a mesh file"}, {});

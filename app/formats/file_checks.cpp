@@ -1,0 +1,422 @@
+#include "formats/file_checks.h"
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "meshtrace/io/input_error.h"
+#include "meshtrace/util/quoted.h"
+
+namespace meshtrace::formats {
+
+namespace {
+constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
+// No list in a mesh file needs more items than a file of 4 GiB has bytes.
+constexpr std::int64_t kMaxListLength = std::int64_t{1} << 32;
+constexpr std::uintmax_t kMaxMaterialBytes = std::uintmax_t{16} << 20;
+
+// Whitespace-separated tokens, with the line each is on.
+class Tokens {
+ public:
+  explicit Tokens(std::string_view text, std::size_t firstLine = 1)
+      : text_(text), line_(firstLine) {}
+
+  bool next(std::string_view& token) {
+    while (pos_ < text_.size() && isSpace(text_[pos_])) {
+      if (text_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+    if (pos_ == text_.size()) return false;
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
+    token = text_.substr(start, pos_ - start);
+    return true;
+  }
+  std::size_t line() const { return line_; }
+
+ private:
+  static bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+  }
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t line_;
+};
+
+bool isInteger(std::string_view token, std::int64_t& value) {
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+bool isNumber(std::string_view token) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+// ---- PLY ----
+
+struct PlyProperty {
+  std::string name;
+  int size = 0;       // bytes of a value, or of a list's items
+  int countSize = 0;  // bytes of a list's count; 0 for a single value
+  bool isFloat = false;
+};
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+  std::size_t line = 0;
+};
+
+// Bytes of a PLY scalar type, 0 if unknown.
+int plyTypeSize(std::string_view type, bool& isFloat) {
+  isFloat = type == "float" || type == "float32" || type == "double" || type == "float64";
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+class PlyCheck {
+ public:
+  PlyCheck(const std::filesystem::path& file, std::string_view bytes)
+      : file_(file), bytes_(bytes) {}
+
+  void run() {
+    const std::size_t bodyStart = readHeader();
+    checkElements();
+    const std::string_view body = bytes_.substr(bodyStart);
+    if (format_ == "ascii")
+      walkAscii(body);
+    else
+      walkBinary(body, format_ == "binary_big_endian");
+  }
+
+ private:
+  [[noreturn]] void failAt(std::size_t line, const std::string& what) const {
+    throw InputError::atLine(file_, line, what);
+  }
+  [[noreturn]] void fail(const std::string& what) const { throw InputError::inFile(file_, what); }
+
+  std::size_t readHeader() {
+    const std::size_t end = bytes_.find("end_header");
+    if (end == std::string_view::npos || end > kMaxPlyHeaderBytes)
+      fail("no end_header in the first " + std::to_string(kMaxPlyHeaderBytes) +
+           " bytes: not a PLY header");
+    std::size_t bodyStart = bytes_.find('\n', end);
+    if (bodyStart == std::string_view::npos) fail("the header's end_header line has no line end");
+    ++bodyStart;
+    std::size_t line = 0, pos = 0;
+    while (pos < bodyStart) {
+      std::size_t eol = bytes_.find('\n', pos);
+      std::string_view text = bytes_.substr(pos, eol - pos);
+      pos = eol + 1;
+      ++line;
+      if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+      if (text.find('\0') != std::string_view::npos) failAt(line, "a NUL byte in the header");
+      Tokens words(text);
+      std::string_view keyword;
+      if (!words.next(keyword)) continue;
+      if (line == 1) {
+        if (keyword != "ply") failAt(line, "not a PLY file: it must start with 'ply'");
+        continue;
+      }
+      std::vector<std::string_view> args;
+      for (std::string_view w; words.next(w);) args.push_back(w);
+      if (keyword == "comment" || keyword == "obj_info") continue;
+      if (keyword == "end_header") break;
+      if (keyword == "format") {
+        if (args.size() != 2 || (args[0] != "ascii" && args[0] != "binary_little_endian" &&
+                                 args[0] != "binary_big_endian"))
+          failAt(line,
+                 "format must be ascii, binary_little_endian or binary_big_endian, "
+                 "with a version");
+        format_ = args[0];
+      } else if (keyword == "element") {
+        std::int64_t count = 0;
+        if (args.size() != 2 || !isInteger(args[1], count) || count < 0)
+          failAt(line, "element needs a name and a count of 0 or more");
+        elements_.push_back({std::string(args[0]), static_cast<std::uint64_t>(count), {}, line});
+      } else if (keyword == "property") {
+        if (elements_.empty()) failAt(line, "a property before any element");
+        PlyProperty p;
+        bool countIsFloat = false;
+        if (args.size() == 4 && args[0] == "list") {
+          p.countSize = plyTypeSize(args[1], countIsFloat);
+          p.size = plyTypeSize(args[2], p.isFloat);
+          p.name = args[3];
+          if (p.countSize == 0 || countIsFloat || p.size == 0)
+            failAt(line, "a list needs an integer count type and a known item type");
+        } else if (args.size() == 2) {
+          p.size = plyTypeSize(args[0], p.isFloat);
+          p.name = args[1];
+          if (p.size == 0) failAt(line, "unknown property type " + quoted(args[0]));
+        } else {
+          failAt(line, "property needs a type and a name (or list, two types and a name)");
+        }
+        elements_.back().properties.push_back(p);
+      } else {
+        failAt(line, "unknown header keyword " + quoted(keyword));
+      }
+    }
+    if (format_.empty()) fail("the header has no format line");
+    headerLines_ = line;
+    return bodyStart;
+  }
+
+  // A vertex element with x, y and z, a face element with one list; the
+  // counts against what the body's bytes can hold.
+  void checkElements() {
+    std::uint64_t minimum = 0;
+    const std::uint64_t body = bytes_.size();
+    for (const PlyElement& e : elements_) {
+      std::uint64_t each = 0;
+      for (const PlyProperty& p : e.properties) {
+        // ASCII: a digit and a space per value; binary: the value's bytes.
+        const int bytes = format_ == "ascii" ? 2 : (p.countSize ? p.countSize : p.size);
+        each += bytes;
+        if (isCornerList(e, p)) each += 3 * (format_ == "ascii" ? 2 : p.size);
+      }
+      if (each > 0 && e.count > (body - minimum) / each)
+        failAt(e.line, "element " + e.name + " announces " + std::to_string(e.count) +
+                           ", more than a " + std::to_string(body) + "-byte file can hold");
+      minimum += e.count * each;
+      if (e.name == "vertex") {
+        vertices_ = e.count;
+        for (const char* axis : {"x", "y", "z"}) {
+          bool found = false;
+          for (const PlyProperty& p : e.properties) found |= p.name == axis && !p.countSize;
+          if (!found) failAt(e.line, std::string("the vertex element has no property ") + axis);
+        }
+      }
+      if (e.name == "face") {
+        bool found = false;
+        for (const PlyProperty& p : e.properties) found |= isCornerList(e, p);
+        if (!found) failAt(e.line, "the face element has no list vertex_indices (or vertex_index)");
+      }
+    }
+  }
+
+  void walkAscii(std::string_view body) {
+    Tokens tokens(body, headerLines_ + 1);
+    std::string_view token;
+    for (const PlyElement& e : elements_) {
+      for (std::uint64_t i = 0; i < e.count; ++i) {
+        const auto where = [&] { return e.name + " " + std::to_string(i); };
+        for (const PlyProperty& p : e.properties) {
+          std::int64_t count = 1;
+          if (p.countSize) {
+            if (!tokens.next(token)) fail("file ends at " + where());
+            if (!isInteger(token, count) || count < 0 || count > kMaxListLength)
+              failAt(tokens.line(), where() + ": bad list count " + quoted(token));
+            checkCorners(e, p, count, where);
+          }
+          for (std::int64_t k = 0; k < count; ++k) {
+            if (!tokens.next(token)) fail("file ends at " + where());
+            std::int64_t integer = 0;
+            if (p.isFloat ? !isNumber(token) : !isInteger(token, integer))
+              failAt(tokens.line(), where() + ": " + p.name + " is " + quoted(token) + ", not " +
+                                        (p.isFloat ? "a number" : "an integer"));
+          }
+        }
+      }
+    }
+  }
+
+  void walkBinary(std::string_view body, bool bigEndian) {
+    std::uint64_t pos = 0;
+    for (const PlyElement& e : elements_) {
+      for (std::uint64_t i = 0; i < e.count; ++i) {
+        const auto where = [&] { return e.name + " " + std::to_string(i); };
+        for (const PlyProperty& p : e.properties) {
+          std::uint64_t count = 1;
+          if (p.countSize) {
+            if (body.size() - pos < static_cast<std::uint64_t>(p.countSize))
+              fail("file ends at " + where());
+            count = readCount(body.data() + pos, p.countSize, bigEndian);
+            pos += p.countSize;
+            if (count > kMaxListLength)
+              fail(where() + ": " + p.name + " lists " +
+                   std::to_string(static_cast<std::int64_t>(count)) + " items");
+            checkCorners(e, p, static_cast<std::int64_t>(count), where);
+          }
+          if ((body.size() - pos) / p.size < count) fail("file ends at " + where());
+          pos += count * p.size;
+        }
+      }
+    }
+  }
+
+  // A list count as read (signed for the signed types).
+  static std::uint64_t readCount(const char* at, int size, bool bigEndian) {
+    unsigned char b[8] = {};
+    std::memcpy(b, at, size);
+    std::uint64_t v = 0;
+    for (int k = 0; k < size; ++k) v |= std::uint64_t{b[bigEndian ? size - 1 - k : k]} << (8 * k);
+    if (size < 8 && (v >> (8 * size - 1)) & 1) v |= ~std::uint64_t{0} << (8 * size);  // negative
+    return v;
+  }
+
+  // The list OpenMesh takes a face's corners from.
+  static bool isCornerList(const PlyElement& e, const PlyProperty& p) {
+    return e.name == "face" && p.countSize != 0 &&
+           (p.name == "vertex_indices" || p.name == "vertex_index");
+  }
+
+  template <typename Where>
+  void checkCorners(const PlyElement& e, const PlyProperty& p, std::int64_t count,
+                    const Where& where) const {
+    if (!isCornerList(e, p)) return;
+    if (count < 3 || static_cast<std::uint64_t>(count) > vertices_)
+      fail(where() + ": " + p.name + " lists " + std::to_string(count) +
+           " corners; a face has 3 to " + std::to_string(vertices_) + " (the vertex count)");
+  }
+
+  const std::filesystem::path& file_;
+  std::string_view bytes_;
+  std::string format_;
+  std::vector<PlyElement> elements_;
+  std::uint64_t vertices_ = 0;
+  std::size_t headerLines_ = 0;
+};
+
+// ---- STL ----
+
+void checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
+  Tokens tokens(bytes);
+  std::string_view t;
+  const auto expect = [&](std::string_view word, const std::string& where) {
+    if (!tokens.next(t)) throw InputError::inFile(file, "file ends in " + where);
+    if (t != word)
+      throw InputError::atLine(file, tokens.line(),
+                               where + ": expected " + std::string(word) + ", found " + quoted(t));
+  };
+  const auto numbers = [&](int n, const std::string& where) {
+    for (int k = 0; k < n; ++k) {
+      if (!tokens.next(t)) throw InputError::inFile(file, "file ends in " + where);
+      if (!isNumber(t))
+        throw InputError::atLine(file, tokens.line(),
+                                 where + ": " + quoted(t) + " is not a number");
+    }
+  };
+  if (!tokens.next(t) || t != "solid")
+    throw InputError::inFile(file,
+                             "neither a binary STL (its size does not match the triangle "
+                             "count at byte 80) nor an ASCII one (it must start with solid)");
+  // The solid's name runs to the first facet or endsolid.
+  while (tokens.next(t) && t != "facet" && t != "endsolid") {
+  }
+  for (std::size_t facet = 0; t == "facet"; ++facet) {
+    const std::string where = "facet " + std::to_string(facet);
+    expect("normal", where);
+    numbers(3, where);
+    expect("outer", where);
+    expect("loop", where);
+    for (int v = 0; v < 3; ++v) {
+      expect("vertex", where);
+      numbers(3, where);
+    }
+    expect("endloop", where + " (a facet has three vertices)");
+    expect("endfacet", where);
+    if (!tokens.next(t))
+      throw InputError::inFile(file, "file ends after " + where + ": no endsolid");
+  }
+  if (t != "endsolid")
+    throw InputError::atLine(file, tokens.line(), "expected facet or endsolid, found " + quoted(t));
+}
+
+std::uint32_t littleEndian32(const char* at) {
+  unsigned char b[4];
+  std::memcpy(b, at, 4);
+  return std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
+         std::uint32_t{b[3]} << 24;
+}
+}  // namespace
+
+void checkPly(const std::filesystem::path& file, std::string_view bytes) {
+  PlyCheck(file, bytes).run();
+}
+
+void checkStl(const std::filesystem::path& file, std::string_view bytes) {
+  if (bytes.size() >= 84) {
+    const std::uint64_t triangles = littleEndian32(bytes.data() + 80);
+    if (bytes.size() == 84 + 50 * triangles) return;  // binary, whole
+  }
+  checkAsciiStl(file, bytes);
+}
+
+void checkObj(const std::filesystem::path& file, std::string_view bytes) {
+  std::int64_t vertices = 0;
+  std::size_t line = 0, faces = 0;
+  for (std::size_t pos = 0; pos < bytes.size();) {
+    std::size_t eol = bytes.find('\n', pos);
+    if (eol == std::string_view::npos) eol = bytes.size();
+    const std::string_view text = bytes.substr(pos, eol - pos);
+    pos = eol + 1;
+    ++line;
+    if (text.find('\0') != std::string_view::npos)
+      throw InputError::atLine(file, line, "binary data (a NUL byte): not a text file");
+    Tokens words(text);
+    std::string_view keyword, w;
+    if (!words.next(keyword)) continue;
+    if (keyword == "v") {
+      for (int k = 0; k < 3; ++k)
+        if (!words.next(w) || !isNumber(w))
+          throw InputError::atLine(file, line, "a vertex needs three numbers");
+      ++vertices;
+    } else if (keyword == "f") {
+      int corners = 0;
+      while (words.next(w)) {
+        std::int64_t index = 0;
+        const std::string_view number = w.substr(0, w.find('/'));
+        if (!isInteger(number, index) || index == 0 || index > vertices || -index > vertices)
+          throw InputError::atLine(file, line,
+                                   "face " + std::to_string(faces) + ": corner " + quoted(w) +
+                                       " names none of the " + std::to_string(vertices) +
+                                       " vertices defined above it");
+        ++corners;
+      }
+      if (corners < 3)
+        throw InputError::atLine(file, line,
+                                 "face " + std::to_string(faces) + " has " +
+                                     std::to_string(corners) + " corners; at least 3 are needed");
+      ++faces;
+    } else if (keyword == "mtllib") {
+      while (words.next(w)) {
+        const auto library = file.parent_path() / std::string(w);
+        std::error_code ec;
+        if (std::filesystem::exists(library, ec) &&
+            (!std::filesystem::is_regular_file(library, ec) ||
+             std::filesystem::file_size(library, ec) > kMaxMaterialBytes))
+          throw InputError::atLine(
+              file, line,
+              "material library " + quoted(w) + " is not a regular file of at most 16 MB");
+      }
+    }
+  }
+}
+
+void checkOm(const std::filesystem::path& file, std::string_view bytes) {
+  // magic "OM", mesh kind, version, then the vertex, face and edge counts.
+  if (bytes.size() < 16 || bytes.substr(0, 2) != "OM")
+    throw InputError::inFile(file, "not an OM file: no OM header");
+  const std::uint64_t vertices = littleEndian32(bytes.data() + 4);
+  const std::uint64_t faces = littleEndian32(bytes.data() + 8);
+  const std::uint64_t edges = littleEndian32(bytes.data() + 12);
+  // At least a float point per vertex, an index per face and per edge.
+  if (vertices * 12 + faces * 4 + edges * 4 > bytes.size())
+    throw InputError::inFile(file, "header announces " + std::to_string(vertices) + " vertices, " +
+                                       std::to_string(faces) + " faces and " +
+                                       std::to_string(edges) + " edges, more than a " +
+                                       std::to_string(bytes.size()) + "-byte file can hold");
+}
+
+}  // namespace meshtrace::formats

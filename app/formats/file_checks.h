@@ -1,0 +1,31 @@
+#pragma once
+// Checks of a mesh file before OpenMesh's readers see it. Those readers
+// trust what a file says: a PLY header without end_header or a face list
+// of 2^31 corners keeps them reading forever, a truncated ASCII STL or an
+// OBJ face naming a vertex that does not exist loads as a smaller mesh
+// without a word, counts in headers go to reserve() unchecked. Each check
+// walks the file's structure (no values are kept, nothing is allocated per
+// element) and throws InputError naming the file, the line or the element,
+// and what is wrong.
+#include <filesystem>
+#include <string_view>
+
+namespace meshtrace::formats {
+
+// The whole header: the format, elements, properties and end_header in
+// the first 64 KiB; a vertex element with x, y and z and a face element
+// with a list of vertex indices; counts a file of this size can hold; then
+// every element of the body, each face listing 3 to (vertex count) corners.
+void checkPly(const std::filesystem::path& file, std::string_view bytes);
+// Binary when its size is 84 + 50 x the triangle count at byte 80 (as
+// OpenMesh decides), else ASCII: solid, then facets of exactly three
+// vertices of three numbers each, then endsolid.
+void checkStl(const std::filesystem::path& file, std::string_view bytes);
+// Vertex lines of three numbers or more, faces of three corners or more,
+// each naming a vertex defined above it (counted from 1, or back from the
+// last with a negative index); a material library must be a regular file.
+void checkObj(const std::filesystem::path& file, std::string_view bytes);
+// The header's counts against the file's size.
+void checkOm(const std::filesystem::path& file, std::string_view bytes);
+
+}  // namespace meshtrace::formats
