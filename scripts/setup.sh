@@ -10,9 +10,9 @@ packages=(
   # toolchain
   cmake g++ ninja-build pkg-config
   # core
-  libglm-dev libtbb-dev libstb-dev libjpeg-dev libpng-dev libcli11-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev
+  libglm-dev libtbb-dev libstb-dev libjpeg-dev libpng-dev libcli11-dev libopenexr-dev
+  # tests and benchmarks (openexr: exrheader, to look at EXR outputs)
+  libgtest-dev libbenchmark-dev openexr
   # the viewer: window, UI, offscreen GL, the OpenMesh cross-check, and its
   # headless snapshot and real-window tests
   libglfw3-dev libimgui-dev libosmesa6-dev libgl1-mesa-dri libopenmesh-dev

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "common/batch.h"
+#include "meshtrace/io/exr.h"
 #include "meshtrace/io/memory_budget.h"
+#include "meshtrace/render/layers.h"
 #include "meshtrace/render/render.h"
 #include "meshtrace/report/left_out.h"
 #include "meshtrace/report/report.h"
@@ -43,7 +45,9 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
   const int w = scene.camera.width(), h = scene.camera.height();
   try {
     const std::uint64_t bvhBytes = accelerationBytes(scene, trace);
-    const std::uint64_t pixelBytes = app::imageBytes(w, h);
+    // An EXR's 15 channels of 4 bytes a pixel, and their encoding.
+    const std::uint64_t pixelBytes =
+        app::imageBytes(w, h) + (isExrPath(out) ? std::uint64_t{120} * w * h : 0);
     budget.reserve(bvhBytes, "build", bvhName(scene));
     budget.reserve(pixelBytes, "render", imageName(scene));
     Counters counters;
@@ -52,6 +56,16 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
         "build", bvhName(scene), bvhBytes, [&] { return SceneIntersector(scene, trace); });
     const double buildMs = app::millisecondsSince(buildStart);
     const auto start = std::chrono::steady_clock::now();
+    if (isExrPath(out)) {
+      const ExrImage layers = withinMemory("render", imageName(scene), pixelBytes, [&] {
+        return renderLayers(intersector, options.render.threads);
+      });
+      std::printf("rendered %dx%d with its layers in %.1f ms\n", w, h,
+                  app::millisecondsSince(start));
+      withinMemory("write", out.string(), pixelBytes, [&] { writeExr(layers, out); });
+      std::printf("wrote %s\n", out.string().c_str());
+      return true;
+    }
     // The colours are freed once quantized: the file is encoded without them.
     const Image8 pixels = withinMemory("render", imageName(scene), pixelBytes, [&] {
       return quantize(render(intersector, options.render.threads, &counters));
@@ -100,7 +114,8 @@ std::uint64_t reportBytes(const Scene& scene) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli{"Render .sce scenes to images (PNG, BMP, PPM or JPEG by extension)."};
+  CLI::App cli{
+      "Render .sce scenes to images (PNG, BMP, PPM, JPEG, or multi-layer OpenEXR by extension)."};
   Options options;
   bool all = false;
   std::string accel = toString(TraceOptions{}.accel);

@@ -57,7 +57,7 @@ bool knownType(const std::string& ext) {
 
 [[noreturn]] void throwUnknownType(const std::filesystem::path& path, const std::string& ext) {
   throw std::runtime_error(path.string() + ": unknown image type '" + ext +
-                           "' (use .png, .bmp, .ppm or .jpg)");
+                           "' (use .png, .bmp, .ppm, .jpg or .exr)");
 }
 
 // The bytes of `image` in the known type `ext` names. A codec's error
@@ -105,9 +105,11 @@ void writeImage(const Image8& image, const std::filesystem::path& path) {
   out.commit();
 }
 
+bool isExrPath(const std::filesystem::path& path) { return lowerExtension(path) == ".exr"; }
+
 void checkImageDestination(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
-  if (!knownType(ext)) throwUnknownType(path, ext);
+  if (!knownType(ext) && !isExrPath(path)) throwUnknownType(path, ext);
   checkOutputDestination(path);
 }
 

@@ -52,8 +52,12 @@ void writeImage(const Image8& image, const std::filesystem::path& path);
 // The same into `out`, of the type its target's extension names, without
 // committing it: for files that replace their targets together.
 void writeImage(const Image8& image, OutputFile& out);
-// Throws std::runtime_error naming the path if writeImage could not write
-// there for a reason known before any image exists: an unknown image type,
+// Whether `path` names an OpenEXR file (.exr): written from float layers
+// with writeExr (exr.h), not from an Image8.
+bool isExrPath(const std::filesystem::path& path);
+// Throws std::runtime_error naming the path if writeImage (or writeExr, for
+// .exr) could not write there for a reason known before any image exists:
+// an unknown image type,
 // or what checkOutputDestination finds. Lets a long render be refused
 // before it starts rather than after.
 void checkImageDestination(const std::filesystem::path& path);
