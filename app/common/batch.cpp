@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "common/progress.h"
 #include "formats/openmesh_reader.h"
 #include "meshtrace/io/image.h"
 #include "meshtrace/io/input_error.h"
@@ -157,7 +158,10 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
     return 1;
   }
   int failures = 0, done = 0;
-  for (const auto& file : scenes) {
+  Progress progress("scene", scenes.size());
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const auto& file = scenes[i];
+    progress.update(i, file.filename().string());
     MemoryBudget budget(memoryLimit);
     std::optional<Scene> scene = loadAndDescribe(file, budget);
     if (!scene) {

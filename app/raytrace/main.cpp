@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/batch.h"
+#include "common/progress.h"
 #include "meshtrace/io/exr.h"
 #include "meshtrace/io/memory_budget.h"
 #include "meshtrace/render/layers.h"
@@ -140,6 +141,8 @@ int main(int argc, char** argv) {
                "Print work counters, the memory planned and what the scene left out");
   std::string maxMemory;
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
+  bool quiet = false;
+  cli.add_flag("--quiet", quiet, "No progress line for --all, --report (shown on a terminal)");
   bool printScene = false;
   cli.add_flag("--print-scene", printScene,
                "Print the .sce a bare MESH file renders as (save it beside the mesh to edit it)");
@@ -155,6 +158,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  if (quiet) app::setProgressShown(false);
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
   if (printScene) {
@@ -178,8 +182,14 @@ int main(int argc, char** argv) {
       try {
         const std::uint64_t bytes = reportBytes(*scene);
         budget.reserve(bytes, "measure", "the configurations of " + file);
+        std::optional<app::Progress> progress;
+        const auto showProgress = [&](std::size_t done, std::size_t total,
+                                      const std::string& next) {
+          if (!progress) progress.emplace("measuring " + file + ":", total);
+          progress->update(done, next);
+        };
         reports.push_back(withinMemory("measure", "the configurations of " + file, bytes, [&] {
-          return measureScene(*scene, options.render.threads);
+          return measureScene(*scene, options.render.threads, showProgress);
         }));
       } catch (const MemoryLimitError& e) {
         app::printMemoryError(file, e);

@@ -136,7 +136,7 @@ std::filesystem::path findReferenceImage(const Scene& scene) {
   return {};
 }
 
-SceneReport measureScene(const Scene& scene, int threads) {
+SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& progress) {
   SceneReport report;
   report.scene = scene.file;
   report.leftOut = leftOut(scene);
@@ -174,6 +174,7 @@ SceneReport measureScene(const Scene& scene, int threads) {
   const std::vector<PixelHit> refHits = primaryHits(scene, refTrace, 1, threads);
 
   for (const ReportConfig& c : configs) {
+    if (progress) progress(report.rows.size(), configs.size(), c.group + " " + c.name);
     ReportRow row{c};
     const auto start = std::chrono::steady_clock::now();
     const Image image = renderConfig(scene, c, threads);

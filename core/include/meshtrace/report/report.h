@@ -6,6 +6,7 @@
 // DIR/report.md, DIR/report.csv and one PNG plot of error against time per
 // scene.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,12 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads =
 // exists with the scene's size.
 std::filesystem::path findReferenceImage(const Scene& scene);
 
-SceneReport measureScene(const Scene& scene, int threads = 0);
+// Told before each configuration is measured: how many are done, of how
+// many, and the next one's group and name.
+using ReportProgress =
+    std::function<void(std::size_t done, std::size_t total, const std::string& next)>;
+
+SceneReport measureScene(const Scene& scene, int threads = 0, const ReportProgress& progress = {});
 
 // Writes report.md, report.csv and plot_<scene>.png into `dir`; `stability`
 // is the markdown table of stability.h, included verbatim.

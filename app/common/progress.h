@@ -1,0 +1,36 @@
+#pragma once
+// A progress line for long work (raytrace --all, --report): what is being
+// done, how far it is and the time left, redrawn in place on stderr. Shown
+// only when stderr is a terminal and not turned off (--quiet): logs and
+// pipes get the tools' ordinary lines only.
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace meshtrace::app {
+
+// Turns progress lines off (--quiet) or back on; they are on by default
+// where stderr is a terminal.
+void setProgressShown(bool shown);
+bool progressShown();
+
+class Progress {
+ public:
+  // `what`: the work, as "rendering" in "rendering 3/10 (scene.sce), 12 s left".
+  Progress(std::string what, std::size_t total);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  // `done` items are finished and `item` comes next. The line ends in a
+  // carriage return, so the tools' next line of output writes over it.
+  void update(std::size_t done, const std::string& item);
+
+ private:
+  std::string what_;
+  std::size_t total_;
+  std::chrono::steady_clock::time_point start_;
+  std::size_t width_ = 0;  // of the line last drawn
+};
+
+}  // namespace meshtrace::app
