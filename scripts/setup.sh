@@ -11,6 +11,8 @@ packages=(
   cmake g++ ninja-build pkg-config
   # core
   libglm-dev libtbb-dev libstb-dev libjpeg-dev libpng-dev libcli11-dev libopenexr-dev
+  # raytrace --report's plots
+  gnuplot-nox
   # tests and benchmarks (openexr: exrheader, to look at EXR outputs)
   libgtest-dev libbenchmark-dev openexr
   # the viewer: window, UI, offscreen GL, the OpenMesh cross-check, and its

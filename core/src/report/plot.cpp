@@ -1,98 +1,142 @@
-// The error-against-time plot of `raytrace --report`, drawn into an Image.
+// The plots of `raytrace --report`, as gnuplot scripts over report.csv.
 #include "meshtrace/report/plot.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
-#include <cmath>
-#include <cstring>
-#include <string>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
 
 namespace meshtrace {
 
 namespace {
-
-// A 3x5 pixel font for tick labels: each glyph is five rows of three bits.
-const char* const kGlyphChars = "0123456789-e.";
-constexpr unsigned char kGlyphs[][5] = {
-    {7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
-    {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
-    {0, 0, 7, 0, 0}, {2, 5, 7, 4, 3}, {0, 0, 0, 0, 2}};
-
-struct Canvas {
-  Image& image;
-  void fill(int x0, int y0, int x1, int y1, const Color& c) {
-    for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
-      for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) image.at(x, y) = c;
-  }
-  // Scaled by `s`, top-left at (x, y).
-  void text(int x, int y, const std::string& s, int scale, const Color& c) {
-    for (char ch : s) {
-      const char* at = std::strchr(kGlyphChars, ch);
-      if (ch && at) {
-        const unsigned char* g = kGlyphs[at - kGlyphChars];
-        for (int r = 0; r < 5; ++r)
-          for (int b = 0; b < 3; ++b)
-            if (g[r] & (4 >> b))
-              fill(x + b * scale, y + r * scale, x + (b + 1) * scale, y + (r + 1) * scale, c);
-      }
-      x += 4 * scale;
-    }
-  }
+// The configuration groups measured against the scene's reference, as the
+// CSV names them and as the legend does; the samples sweep, measured
+// against a converged render, has a panel of its own.
+struct Group {
+  const char* csv;
+  const char* legend;
+  const char* color;
+};
+constexpr Group kGroups[] = {
+    {"progressive", "progressive passes (coarse to exact)", "#d62728"},
+    {"triangle", "triangle test, double precision", "#2ca02c"},
+    {"precision", "triangle test, single precision", "#9467bd"},
+    {"accel", "acceleration (box per mesh, brute force)", "#ff7f0e"},
 };
 
-const Color& groupColor(const std::string& group) {
-  static const Color colors[] = {{0.85, 0.2, 0.1}, {0.1, 0.5, 0.9}, {0.1, 0.65, 0.2},
-                                 {0.6, 0.2, 0.8},  {0.9, 0.6, 0.0}, {0.3, 0.3, 0.3}};
-  static const char* groups[] = {"progressive", "samples", "triangle", "precision", "accel"};
-  for (int i = 0; i < 5; ++i)
-    if (group == groups[i]) return colors[i];
-  return colors[5];
+// A single-quoted gnuplot string holding `text` (quotes doubled); for a
+// `shown` string, one printed in enhanced text, its markup characters
+// (_ ^ @ & { }) escaped too.
+std::string quotedForGnuplot(const std::string& text, bool shown = false) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'')
+      out += "''";
+    else if (shown && std::string_view("_^@&{}").find(c) != std::string_view::npos)
+      out += std::string("\\") + c;
+    else
+      out += c;
+  }
+  return out + "'";
 }
-
 }  // namespace
 
-Image plotErrorAgainstTime(const SceneReport& report, int width, int height) {
-  Image image(width, height, Color(1.0));
-  Canvas canvas{image};
-  constexpr double kFloor = 0.01;  // RMSE 0 (identical images) is plotted at 0.01
-  double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
+std::string plotScript(const SceneReport& report) {
+  const std::string scene = report.scene.stem().string();
+  std::ostringstream gp;
+  // The y range of the first panel: its errors (0 drawn at 0.01) and the
+  // JPEG-noise threshold.
+  double low = report.jpegNoiseRmse > 0.0 ? report.jpegNoiseRmse : 1.0, high = low;
   for (const ReportRow& r : report.rows) {
-    x0 = std::min(x0, r.seconds), x1 = std::max(x1, r.seconds);
-    y0 = std::min(y0, r.rmse + kFloor), y1 = std::max(y1, r.rmse + kFloor);
+    if (r.against != "reference") continue;
+    low = std::min(low, std::max(r.rmse, 0.01));
+    high = std::max(high, std::max(r.rmse, 0.01));
   }
-  if (report.rows.empty()) return image;
-  const int dx0 = int(std::floor(std::log10(x0))),
-            dx1 = std::max(dx0 + 1, int(std::ceil(std::log10(x1))));
-  const int dy0 = int(std::floor(std::log10(y0))),
-            dy1 = std::max(dy0 + 1, int(std::ceil(std::log10(y1))));
-  const int left = 70, right = width - 40, top = 20, bottom = height - 50;
-  const auto px = [&](double s) {
-    return left + (std::log10(s) - dx0) / (dx1 - dx0) * (right - left);
-  };
-  const auto py = [&](double e) {
-    return bottom - (std::log10(e) - dy0) / (dy1 - dy0) * (bottom - top);
-  };
-  const Color grid(0.85), axis(0.0);
-  for (int d = dx0; d <= dx1; ++d) {
-    const int x = int(px(std::pow(10.0, d)));
-    canvas.fill(x, top, x + 1, bottom, grid);
-    canvas.text(x - 8, bottom + 10, "1e" + std::to_string(d), 3, axis);
+  char jpeg[32];
+  std::snprintf(jpeg, sizeof jpeg, "%.3f", report.jpegNoiseRmse);
+  // Columns of report.csv: 1 scene, 2 group, 3 config, 8 samples, 9 seconds, 10 rmse.
+  gp << "# Plots " << scene << " from report.csv (raytrace --report): gnuplot plot_" << scene
+     << ".gp\n"
+     << "if (!exists('csv')) csv = 'report.csv'\n"
+     << "if (!exists('png')) png = 'plot_" << scene << ".png'\n"
+     << "set datafile separator comma\n"
+     << "set terminal pngcairo size 1100,480 font 'sans,11'\n"
+     << "set output png\n"
+     << "scene = " << quotedForGnuplot(scene) << "\n"
+     << "# RMSE 0 (identical to the reference) is drawn at 0.01 on the log axis.\n"
+     << "shown(e) = e > 0.01 ? e : 0.01\n"
+     << "pick(g, v) = (strcol(1) eq scene && strcol(2) eq g) ? v : NaN\n"
+     << "set multiplot layout 1,2 title " << quotedForGnuplot(scene + ": error and run time", true)
+     << " font 'sans,13'\n"
+     << "set logscale xy\nset grid\nset key top right box opaque font 'sans,9'\n"
+     << "set title 'Error against run time, per configuration group'\n"
+     << "set xlabel 'run time, whole image on all cores (s)'\n"
+     << "set ylabel 'RMSE against the reference (8-bit levels)'\n"
+     << "jpeg = " << jpeg << "\n"
+     << "# The errors and the threshold, with room around them.\n"
+     << "set yrange [" << low / 2 << ":" << high * 2 << "]\n"
+     << "set arrow 1 from graph 0, first jpeg to graph 1, first jpeg nohead dt 2 lw 1.5 lc "
+        "'black'\n"
+     << "set label 1 sprintf('JPEG noise: RMSE %.3f', jpeg) at graph 0.02, first jpeg*1.25 "
+        "font 'sans,9'\n"
+     << "plot ";
+  bool first = true;
+  for (const Group& g : kGroups) {
+    gp << (first ? "" : ", \\\n     ") << "csv using (pick('" << g.csv << "', $9)):(shown($10)) "
+       << "skip 1 with points pt 7 ps 1.2 lc rgb '" << g.color << "' title '" << g.legend << "'";
+    first = false;
   }
-  for (int d = dy0; d <= dy1; ++d) {
-    const int y = int(py(std::pow(10.0, d)));
-    canvas.fill(left, y, right, y + 1, grid);
-    canvas.text(8, y - 7, "1e" + std::to_string(d), 3, axis);
+  gp << "\nunset arrow 1\nunset label 1\n"
+     << "set title 'Samples per pixel against a converged render'\n"
+     << "set xlabel 'samples per pixel'\n"
+     << "set ylabel 'RMSE against the converged render (8-bit levels)'\n"
+     << "set xtics (1, 2, 4, 8, 16, 32, 64, 128, 256)\nset autoscale y\n"
+     << "set key top right box opaque width 2 font 'sans,9'\n"
+     << "f(x) = a * x**b\na = 1; b = -0.5\n"
+     << "set fit quiet nolog\n"
+     << "fit log(f(x)) csv using (pick('samples', $8)):(log(shown($10))) skip 1 via a, b\n"
+     << "set label 2 sprintf('RMSE falls as samples^{%.2f} (log-log slope)', b) at graph 0.05, "
+        "graph 0.08 font 'sans,10'\n"
+     << "plot csv using (pick('samples', $8)):(shown($10)) skip 1 with linespoints pt 7 lc rgb "
+        "'#1f77b4' title 'measured', \\\n"
+     << "     f(x) with lines dt 2 lc 'black' title 'power-law fit'\n"
+     << "unset multiplot\n";
+  return gp.str();
+}
+
+std::string plotPng(const SceneReport& report, const std::string& csvBytes) {
+  std::string pattern = (std::filesystem::temp_directory_path() / "meshtrace-plot-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a folder for gnuplot");
+  const std::filesystem::path folder = pattern;
+  std::string png;
+  std::string error;
+  {
+    std::ofstream(folder / "report.csv", std::ios::binary) << csvBytes;
+    std::ofstream(folder / "plot.gp", std::ios::binary) << plotScript(report);
+    const std::string command =
+        "cd '" + folder.string() + "' && gnuplot -e \"png='plot.png'\" plot.gp > gnuplot.log 2>&1";
+    const int status = std::system(command.c_str());
+    if (status != 0 || !std::filesystem::exists(folder / "plot.png")) {
+      std::ifstream log(folder / "gnuplot.log");
+      std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+      error = WIFEXITED(status) && WEXITSTATUS(status) == 127
+                  ? "gnuplot not found (Debian's gnuplot-nox)"
+                  : "gnuplot failed: " + said.substr(said.size() > 300 ? said.size() - 300 : 0);
+    } else {
+      std::ifstream in(folder / "plot.png", std::ios::binary);
+      png.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
   }
-  canvas.fill(left, top, left + 2, bottom, axis);
-  canvas.fill(left, bottom, right, bottom + 2, axis);
-  // The JPEG-noise threshold as a dashed line.
-  const int yn = int(py(report.jpegNoiseRmse + kFloor));
-  for (int x = left; x < right; x += 12) canvas.fill(x, yn, x + 6, yn + 2, Color(0.9, 0.3, 0.3));
-  for (const ReportRow& r : report.rows) {
-    const int x = int(px(r.seconds)), y = int(py(r.rmse + kFloor));
-    canvas.fill(x - 4, y - 4, x + 5, y + 5, axis);
-    canvas.fill(x - 3, y - 3, x + 4, y + 4, groupColor(r.config.group));
-  }
-  return image;
+  std::error_code ec;
+  std::filesystem::remove_all(folder, ec);
+  if (!error.empty()) throw std::runtime_error(error);
+  return png;
 }
 
 }  // namespace meshtrace

@@ -2,6 +2,7 @@
 #include "meshtrace/report/report.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -55,6 +56,23 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Least-squares slope of log RMSE against log samples over the sweep's rows
+// with an error (0 where fewer than two).
+double samplesSlope(const std::vector<ReportRow>& rows) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const ReportRow& r : rows) {
+    if (r.config.group != "samples" || !(r.rmse > 0.0)) continue;
+    const double x = std::log(double(r.config.samples)), y = std::log(r.rmse);
+    n += 1;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double d = n * sxx - sx * sx;
+  return n >= 2 && d > 0 ? (n * sxy - sx * sy) / d : 0.0;
+}
+
 std::string configLabel(const TraceOptions& t) {
   return std::string(toString(t.triangle.test)) + " " + toString(t.triangle.precision) + " " +
          toString(t.accel);
@@ -70,7 +88,7 @@ std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::str
   for (int step : {16, 4, 2})
     out.push_back({"progressive", "coarse 1/" + std::to_string(step), base, step, 1});
   out.push_back({"progressive", "exact (default)", base, 1, 1});
-  for (int spp : {4, 16})
+  for (int spp : {1, 4, 16, 64})
     out.push_back({"samples", std::to_string(spp) + " samples/pixel", base, 1, spp});
   for (Precision p : {Precision::Double, Precision::Single})
     for (TriangleTest t :
@@ -173,14 +191,29 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
   if (bruteCheap) refTrace.accel = AccelMethod::None;
   const std::vector<PixelHit> refHits = primaryHits(scene, refTrace, 1, threads);
 
+  // The samples sweep's reference: the same scene, converged.
+  Image8 converged;
+  const ReportConfig convergedConfig{"reference",
+                                     std::to_string(kConvergedSamples) + " samples/pixel",
+                                     TraceOptions{}, 1, kConvergedSamples};
+  for (const ReportConfig& c : configs) {
+    if (c.group != "samples" || !converged.rgb.empty()) continue;
+    if (progress) progress(0, configs.size(), "the converged render");
+    converged = quantize(renderConfig(scene, convergedConfig, threads));
+    report.converged = "our render with " + convergedConfig.name;
+  }
+
   for (const ReportConfig& c : configs) {
     if (progress) progress(report.rows.size(), configs.size(), c.group + " " + c.name);
     ReportRow row{c};
     const auto start = std::chrono::steady_clock::now();
     const Image image = renderConfig(scene, c, threads);
     row.seconds = secondsSince(start);
-    const Image8 ours = jpegReference ? jpegRoundTrip(quantize(image), 95) : quantize(image);
-    const ImageDifference d = compareImages(ours, reference);
+    const bool sweep = c.group == "samples";
+    row.against = sweep ? "converged" : "reference";
+    const Image8 ours =
+        jpegReference && !sweep ? jpegRoundTrip(quantize(image), 95) : quantize(image);
+    const ImageDifference d = compareImages(ours, sweep ? converged : reference);
     row.rmse = d.rmse;
     row.psnr = d.psnr;
     const std::vector<PixelHit> hits = primaryHits(scene, c.trace, c.step, threads);
@@ -199,6 +232,7 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
     row.hitDiffers = hits.empty() ? 0.0 : double(differ) / double(hits.size());
     report.rows.push_back(row);
   }
+  report.samplesSlope = samplesSlope(report.rows);
   return report;
 }
 
@@ -214,7 +248,7 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   std::vector<OutputFile> files;
   std::ostringstream csv, md;
   csv << "scene,group,config,accel,triangle,precision,step,samples,seconds,rmse,psnr,"
-         "hit_differs,max_normal_deg,reference\n";
+         "hit_differs,max_normal_deg,against,reference\n";
   md << "# Error against run time\n\n"
      << "Each configuration renders the whole image once on all cores; the time is wall time "
         "(including the BVH build), so it varies with machine load. RMSE and PSNR are against "
@@ -224,9 +258,9 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
         "trace; *normal* the worst angle between shading normals where the primitive is the "
         "same. Coarse passes trace one pixel per block and repeat it over the block, as the "
         "viewer's first passes do.\n\n"
-     << "Plots: RMSE + 0.01 against seconds, log axes; red = progressive passes, blue = samples "
-        "per pixel, green = triangle test (double), purple = single precision, orange = "
-        "acceleration; the dashed line is the JPEG-noise threshold.\n\n";
+     << "Plots (gnuplot, from report.csv; plot_SCENE.gp redraws them): RMSE against run "
+        "time per configuration group with the JPEG-noise threshold, and the samples sweep's "
+        "RMSE against samples per pixel with its power-law fit, both on log axes.\n\n";
   char buf[512];
   for (const SceneReport& s : scenes) {
     const std::string name = s.scene.stem().string();
@@ -241,13 +275,16 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
                     c.name.c_str(), c.group.c_str(), r.seconds, r.rmse, r.psnr,
                     100.0 * r.hitDiffers, r.maxNormalDegrees);
       md << buf;
-      std::snprintf(buf, sizeof buf, "%s,%s,%s,%s,%s,%s,%d,%d,%.6f,%.4f,%.3f,%.6f,%.6g,\"%s\"\n",
+      const std::string& against = r.against == "converged" ? s.converged : s.reference;
+      std::snprintf(buf, sizeof buf, "%s,%s,%s,%s,%s,%s,%d,%d,%.6f,%.4f,%.3f,%.6f,%.6g,%s,\"%s\"\n",
                     name.c_str(), c.group.c_str(), c.name.c_str(), toString(c.trace.accel),
                     toString(c.trace.triangle.test), toString(c.trace.triangle.precision), c.step,
                     c.samples, r.seconds, r.rmse, r.psnr, r.hitDiffers, r.maxNormalDegrees,
-                    s.reference.c_str());
+                    r.against.c_str(), against.c_str());
       csv << buf;
-      if (r.rmse <= s.jpegNoiseRmse && (!cheapest || r.seconds < cheapest->seconds)) cheapest = &r;
+      if (r.against == "reference" && r.rmse <= s.jpegNoiseRmse &&
+          (!cheapest || r.seconds < cheapest->seconds))
+        cheapest = &r;
     }
     md << "\n**Conclusion:** "
        << (cheapest ? "the cheapest configuration within JPEG noise of the reference is *" +
@@ -257,15 +294,27 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
                            buf) +
                           ")."
                     : std::string("no configuration is within JPEG noise of the reference."))
-       << "\n\n![error against time](plot_" << name << ".png)\n\n";
+       << "\n\n";
+    if (!s.converged.empty())
+      md << "The samples-per-pixel rows are measured against " << s.converged
+         << " instead: on log-log axes their RMSE falls with slope "
+         << (std::snprintf(buf, sizeof buf, "%.2f", s.samplesSlope), buf)
+         << " (least squares; -0.5 for independent random samples).\n\n";
+    md << "![error against run time, and convergence](plot_" << name << ".png)\n\n";
     if (!s.leftOut.empty()) {
       md << "Left out, and why:\n\n";
       for (const std::string& l : s.leftOut) md << "- " << l << "\n";
       md << "\n";
     }
-    files.emplace_back(dir / ("plot_" + name + ".png"));
-    writeImage(quantize(plotErrorAgainstTime(s)), files.back());
+  }
+  // The plots, drawn by gnuplot from the finished CSV; their scripts are
+  // kept beside it to redraw or edit them.
+  for (const SceneReport& s : scenes) {
+    const std::string name = s.scene.stem().string();
+    files.emplace_back(dir / ("plot_" + name + ".gp")).write(plotScript(s));
     files.back().finish();  // closed now: a report of many scenes holds no descriptors open
+    files.emplace_back(dir / ("plot_" + name + ".png")).write(plotPng(s, csv.str()));
+    files.back().finish();
   }
   md << "## Stability suite\n\n"
      << "Per triangle test and precision (tests/core/stability_*_test.cpp): leaks = rays from "

@@ -13,10 +13,10 @@
 namespace meshtrace {
 namespace {
 
-Scene tinyScene() {
+Scene tinyScene(int width = 24, int height = 16) {
   Scene s;
   s.file = test::scratchDir() / "tiny.sce";  // no expected image beside it
-  s.camera = Camera(CameraSpec{{0, 1, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 24, 16});
+  s.camera = Camera(CameraSpec{{0, 1, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, width, height});
   s.lights.push_back({{3, 4, 5}, Color(1.0)});
   s.spheres.push_back({{-0.8, 0, 0}, 0.6, {Color(0.2), Color(0.6), Color(0.3), 20.0, 0.0}});
   MeshData box = makeClosedGridBox(1);
@@ -56,8 +56,28 @@ TEST(Report, MeasuresEveryConfigurationAndWritesFiles) {
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, r.rows.size() + 1);
   const Image8 plot = readImage(dir / "plot_tiny.png");
-  EXPECT_EQ(plot.width, 640);
+  EXPECT_EQ(plot.width, 1100);
+  EXPECT_TRUE(std::filesystem::exists(dir / "plot_tiny.gp"));
   EXPECT_TRUE(std::filesystem::exists(dir / "report.md"));
+}
+
+// The samples sweep is scored against a converged render, so its error
+// falls as samples rise (against the 1-sample exact image, 16 samples
+// looked worse than 4); the pixel-exact configurations keep the reference.
+TEST(Report, SamplesErrorFallsAgainstAConvergedRender) {
+  // Large enough for the error to be an average over many edge pixels.
+  const SceneReport r = measureScene(tinyScene(120, 80), 0);
+  EXPECT_NE(r.converged.find("256 samples"), std::string::npos) << r.converged;
+  std::vector<double> sweep;
+  for (const ReportRow& row : r.rows) {
+    EXPECT_EQ(row.against, row.config.group == "samples" ? "converged" : "reference")
+        << row.config.name;
+    if (row.config.group == "samples") sweep.push_back(row.rmse);
+  }
+  ASSERT_EQ(sweep.size(), 4u);  // 1, 4, 16, 64 samples
+  for (std::size_t i = 1; i < sweep.size(); ++i) EXPECT_LT(sweep[i], sweep[i - 1]) << i;
+  EXPECT_LT(r.samplesSlope, -0.3);
+  EXPECT_GT(r.samplesSlope, -1.5);
 }
 
 }  // namespace

@@ -29,12 +29,25 @@ struct ReportRow {
   double rmse = 0.0, psnr = 0.0;  // against the reference, 8-bit units
   double hitDiffers = 0.0;        // share of pixels whose primary hit differs
   double maxNormalDegrees = 0.0;  // worst shading-normal angle on the same primitive
+  // What the errors are against: "reference" (SceneReport::reference) or
+  // "converged" (SceneReport::converged, for the samples sweep).
+  std::string against = "reference";
 };
+
+inline constexpr int kConvergedSamples = 256;
 
 struct SceneReport {
   std::filesystem::path scene;
   std::string reference;       // what the errors are measured against
   double jpegNoiseRmse = 0.0;  // "within JPEG noise" threshold
+  // The samples sweep's reference: the same scene rendered with
+  // kConvergedSamples samples per pixel, which the sweep's RMSE falls towards
+  // (a 1-sample reference would favour 1 sample). Pixel-exact configurations
+  // keep `reference`.
+  std::string converged;
+  // The slope of log RMSE against log samples over the sweep (-0.5 for
+  // independent random samples).
+  double samplesSlope = 0.0;
   std::vector<ReportRow> rows;
   std::vector<std::string> leftOut;
 };
