@@ -13,8 +13,9 @@ packages=(
   libglm-dev libtbb-dev libstb-dev libjpeg-dev libpng-dev libcli11-dev libopenexr-dev
   # raytrace --report's plots
   gnuplot-nox
-  # tests and benchmarks (openexr: exrheader, to look at EXR outputs)
-  libgtest-dev libbenchmark-dev openexr
+  # tests and benchmarks (openexr: exrheader, to look at EXR outputs; parallel:
+  # the shard test runs raytrace --all --shard through GNU parallel)
+  libgtest-dev libbenchmark-dev openexr parallel
   # the viewer: window, UI, offscreen GL, the OpenMesh cross-check, and its
   # headless snapshot and real-window tests
   libglfw3-dev libimgui-dev libosmesa6-dev libgl1-mesa-dri libopenmesh-dev

@@ -133,7 +133,8 @@ bool printMeshScene(const std::filesystem::path& mesh, std::uint64_t memoryLimit
 
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
                   const std::string& prefix, std::uint64_t memoryLimit,
-                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job) {
+                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job,
+                  const Shard& shard) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
     // A symlink loop or a missing folder is said as such, not as "not a folder".
@@ -158,9 +159,12 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
     return 1;
   }
   int failures = 0, done = 0;
-  Progress progress("scene", scenes.size());
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const auto& file = scenes[i];
+  std::vector<std::filesystem::path> share;
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    if (shard.owns(i)) share.push_back(scenes[i]);
+  Progress progress("scene", share.size());
+  for (std::size_t i = 0; i < share.size(); ++i) {
+    const auto& file = share[i];
     progress.update(i, file.filename().string());
     MemoryBudget budget(memoryLimit);
     std::optional<Scene> scene = loadAndDescribe(file, budget);
@@ -175,7 +179,11 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
     else
       ++failures;
   }
-  std::printf("%d scenes written to %s, %d failed\n", done, outDir.string().c_str(), failures);
+  std::printf("%d scenes written to %s, %d failed%s\n", done, outDir.string().c_str(), failures,
+              shard.count > 1 ? (" (share " + shard.text() + " of " +
+                                 std::to_string(scenes.size()) + " scenes)")
+                                    .c_str()
+                              : "");
   return failures == 0 ? 0 : 1;
 }
 

@@ -9,6 +9,7 @@
 #include <system_error>
 #include <vector>
 
+#include "common/shard.h"
 #include "meshtrace/geometry/scene.h"
 #include "meshtrace/io/memory_budget.h"
 
@@ -55,9 +56,11 @@ using SceneJob =
 // outDir/<prefix><stem>.png once that path is known to be writable
 // (imageDestinationUsable). Returns the process exit code: 0 if every scene
 // succeeded.
+// Only the scenes of `shard` (by their index in the sorted list) are run.
 int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path& outDir,
                   const std::string& prefix, std::uint64_t memoryLimit,
-                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job);
+                  const std::function<bool(const Scene&)>& wanted, const SceneJob& job,
+                  const Shard& shard = {});
 
 // Whether an image could be written to `path` (checkImageDestination);
 // prints the error if not. Tools call it before loading and rendering, so

@@ -141,6 +141,10 @@ int main(int argc, char** argv) {
                "Print work counters, the memory planned and what the scene left out");
   std::string maxMemory;
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
+  std::string shardOption;
+  cli.add_option("--shard", shardOption,
+                 "With --all: render only share I/N of the scenes (those whose index in the "
+                 "sorted list is I mod N); default: a Slurm array task's share");
   bool quiet = false;
   cli.add_flag("--quiet", quiet, "No progress line for --all, --report (shown on a terminal)");
   bool printScene = false;
@@ -161,6 +165,10 @@ int main(int argc, char** argv) {
   if (quiet) app::setProgressShown(false);
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
+  if (!shardOption.empty() && !all) {
+    std::fprintf(stderr, "error: --shard works with --all (not yet with --report)\n");
+    return 2;
+  }
   if (printScene) {
     if (args.size() != 1) {
       std::fprintf(stderr, "error: --print-scene takes one MESH file\n");
@@ -215,11 +223,14 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path dir = args.size() > 0 ? args[0] : "scenes";
     const std::filesystem::path outDir = args.size() > 1 ? args[1] : "results";
+    const std::optional<app::Shard> shard = app::shardToRun(shardOption);
+    if (!shard) return 2;
     return app::runOverFolder(
         dir, outDir, "", *memoryLimit, [](const Scene&) { return true; },
         [&](const Scene& scene, const std::filesystem::path& out, MemoryBudget& budget) {
           return renderToFile(scene, out, options, budget);
-        });
+        },
+        *shard);
   }
   if (args.size() != 2) {
     std::fprintf(stderr, "error: expected SCENE.sce OUT.png (or --all)\n%s", cli.help().c_str());
