@@ -21,7 +21,9 @@ inline constexpr const char* kMaxMemoryHelp =
     "(default: 3/4 of physical memory, less under ulimit -v)";
 
 // The limit --max-memory gives ("" for defaultMemoryLimit()); prints the
-// error and returns nothing if it is not a size.
+// error and returns nothing if it is not a size. Under an address-space
+// limit it first caps the worker threads to those the limit leaves room
+// for (workerThreadsTheAddressSpaceAllows).
 std::optional<std::uint64_t> memoryLimit(const std::string& option);
 
 // Prints the error of a scene that needs more memory than it may use.

@@ -81,6 +81,14 @@ std::uint64_t defaultMemoryLimit() {
   return limit;
 }
 
+int workerThreadsTheAddressSpaceAllows() {
+  rlimit as{};
+  if (::getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY) return -1;
+  const std::uint64_t used = addressSpaceInUse();
+  const std::uint64_t left = as.rlim_cur > used ? as.rlim_cur - used : 0;
+  return static_cast<int>(std::min<std::uint64_t>(left / 2 / kAddressSpacePerThread, 1024));
+}
+
 std::string formatBytes(std::uint64_t bytes) {
   char buffer[32];
   const double mib = static_cast<double>(bytes) / (1 << 20);

@@ -69,6 +69,12 @@ std::uint64_t physicalMemoryBytes();
 // address space the plan does not count).
 std::uint64_t defaultMemoryLimit();
 
+// Under an address-space limit (ulimit -v), how many worker threads (each
+// with its stack) fit in half of what this process has left of it; -1
+// without a limit. A thread that cannot be created ends the process, so
+// the tools cap their parallelism to this before any parallel work.
+int workerThreadsTheAddressSpaceAllows();
+
 // "512 MB", "1.5 GB": bytes for messages, in units of 2^20 and 2^30.
 std::string formatBytes(std::uint64_t bytes);
 // Reads a size such as "2G", "512M", "1.5GB", "800MiB", "64k" or "123456"
