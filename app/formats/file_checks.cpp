@@ -107,13 +107,23 @@ class PlyCheck {
   [[noreturn]] void fail(const std::string& what) const { throw InputError::inFile(file_, what); }
 
   std::size_t readHeader() {
-    const std::size_t end = bytes_.find("end_header");
-    if (end == std::string_view::npos || end > kMaxPlyHeaderBytes)
-      fail("no end_header in the first " + std::to_string(kMaxPlyHeaderBytes) +
+    // The header ends at a line that is end_header and nothing else (as
+    // OpenMesh's reader reads it); the text may occur inside other lines.
+    std::size_t bodyStart = std::string_view::npos;
+    for (std::size_t at = 0; at < bytes_.size() && at <= kMaxPlyHeaderBytes;) {
+      const std::size_t eol = bytes_.find('\n', at);
+      if (eol == std::string_view::npos) break;
+      std::string_view text = bytes_.substr(at, eol - at);
+      if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+      at = eol + 1;
+      if (text == "end_header") {
+        bodyStart = at;
+        break;
+      }
+    }
+    if (bodyStart == std::string_view::npos)
+      fail("no end_header line in the first " + std::to_string(kMaxPlyHeaderBytes) +
            " bytes: not a PLY header");
-    std::size_t bodyStart = bytes_.find('\n', end);
-    if (bodyStart == std::string_view::npos) fail("the header's end_header line has no line end");
-    ++bodyStart;
     std::size_t line = 0, pos = 0;
     while (pos < bodyStart) {
       std::size_t eol = bytes_.find('\n', pos);
@@ -134,11 +144,12 @@ class PlyCheck {
       if (keyword == "comment" || keyword == "obj_info") continue;
       if (keyword == "end_header") break;
       if (keyword == "format") {
-        if (args.size() != 2 || (args[0] != "ascii" && args[0] != "binary_little_endian" &&
-                                 args[0] != "binary_big_endian"))
+        if (args.size() != 2 || args[1] != "1.0" ||
+            (args[0] != "ascii" && args[0] != "binary_little_endian" &&
+             args[0] != "binary_big_endian"))
           failAt(line,
                  "format must be ascii, binary_little_endian or binary_big_endian, "
-                 "with a version");
+                 "version 1.0");
         format_ = args[0];
       } else if (keyword == "element") {
         std::int64_t count = 0;
@@ -168,6 +179,9 @@ class PlyCheck {
       }
     }
     if (format_.empty()) fail("the header has no format line");
+    bool vertices = false;
+    for (const PlyElement& e : elements_) vertices |= e.name == "vertex";
+    if (!vertices) fail("the header has no vertex element");
     headerLines_ = line;
     return bodyStart;
   }

@@ -43,6 +43,15 @@ std::vector<BadMesh> badMeshes() {
       {"no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", {"no end_header"}},
       {"not_ply.ply", "plx\nformat ascii 1.0\nend_header\n", {"not_ply.ply:1", "'ply'"}},
       {"bad_format.ply", "ply\nformat text 1.0\nend_header\n", {"bad_format.ply:2", "format"}},
+      // Found by the fuzzer: OpenMesh's reader does not return on these.
+      {"bad_version.ply",
+       "ply\nformat ascii ples\nend_header\n0 0 1\n",
+       {"bad_version.ply:2", "version 1.0"}},
+      {"end_header_in_a_name.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n"
+       "property float y\nproperty float z\nproperty float xend_header\n\1\2\3",
+       {"no end_header line"}},
+      {"no_vertex_element.ply", "ply\nformat ascii 1.0\nend_header\n", {"no vertex element"}},
       {"unknown_keyword.ply",
        "ply\nformat ascii 1.0\nfrobnicate\nend_header\n",
        {"unknown_keyword.ply:3", "'frobnicate'"}},
