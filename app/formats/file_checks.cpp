@@ -63,6 +63,7 @@ struct PlyProperty {
   std::string name;
   int size = 0;       // bytes of a value, or of a list's items
   int countSize = 0;  // bytes of a list's count; 0 for a single value
+  bool countSigned = false;
   bool isFloat = false;
 };
 
@@ -162,6 +163,8 @@ class PlyCheck {
         bool countIsFloat = false;
         if (args.size() == 4 && args[0] == "list") {
           p.countSize = plyTypeSize(args[1], countIsFloat);
+          p.countSigned = args[1] == "char" || args[1] == "short" || args[1] == "int" ||
+                          args[1] == "int8" || args[1] == "int16" || args[1] == "int32";
           p.size = plyTypeSize(args[2], p.isFloat);
           p.name = args[3];
           if (p.countSize == 0 || countIsFloat || p.size == 0)
@@ -248,6 +251,19 @@ class PlyCheck {
   void walkBinary(std::string_view body, bool bigEndian) {
     std::uint64_t pos = 0;
     for (const PlyElement& e : elements_) {
+      // Records without lists have one size: the element is skipped whole.
+      std::uint64_t record = 0;
+      bool fixed = true;
+      for (const PlyProperty& p : e.properties) {
+        record += p.size;
+        fixed &= p.countSize == 0;
+      }
+      if (fixed) {
+        if (record > 0 && (body.size() - pos) / record < e.count)
+          fail("file ends at " + e.name + " " + std::to_string((body.size() - pos) / record));
+        pos += e.count * record;
+        continue;
+      }
       for (std::uint64_t i = 0; i < e.count; ++i) {
         const auto where = [&] { return e.name + " " + std::to_string(i); };
         for (const PlyProperty& p : e.properties) {
@@ -255,7 +271,7 @@ class PlyCheck {
           if (p.countSize) {
             if (body.size() - pos < static_cast<std::uint64_t>(p.countSize))
               fail("file ends at " + where());
-            count = readCount(body.data() + pos, p.countSize, bigEndian);
+            count = readCount(body.data() + pos, p.countSize, p.countSigned, bigEndian);
             pos += p.countSize;
             if (count > kMaxListLength)
               fail(where() + ": " + p.name + " lists " +
@@ -269,13 +285,15 @@ class PlyCheck {
     }
   }
 
-  // A list count as read (signed for the signed types).
-  static std::uint64_t readCount(const char* at, int size, bool bigEndian) {
+  // A list count as read; a negative one of a signed type becomes huge.
+  static std::uint64_t readCount(const char* at, int size, bool isSigned, bool bigEndian) {
+    if (size == 1 && !isSigned) return static_cast<unsigned char>(*at);  // the usual count
     unsigned char b[8] = {};
     std::memcpy(b, at, size);
     std::uint64_t v = 0;
     for (int k = 0; k < size; ++k) v |= std::uint64_t{b[bigEndian ? size - 1 - k : k]} << (8 * k);
-    if (size < 8 && (v >> (8 * size - 1)) & 1) v |= ~std::uint64_t{0} << (8 * size);  // negative
+    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1)
+      v |= ~std::uint64_t{0} << (8 * size);  // negative: refused as too long
     return v;
   }
 
