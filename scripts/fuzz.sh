@@ -19,8 +19,8 @@ if [ "${1:-}" = --long ]; then
   shift
 fi
 harnesses=("$@")
-# om_reader is run by name only: OpenMesh's OM reader trusts the halfedge
-# indices in a file and writes out of bounds within seconds (README).
+# om_reader is run by name only: OM files are refused after their header's
+# check (OpenMesh's OM reader is not safe on a damaged file; README).
 [ ${#harnesses[@]} -gt 0 ] ||
   harnesses=(scene_parser off_reader command_line image_writer ply_reader obj_reader stl_reader)
 

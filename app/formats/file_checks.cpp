@@ -449,6 +449,13 @@ void checkOm(const std::filesystem::path& file, std::string_view bytes) {
                                        std::to_string(faces) + " faces and " +
                                        std::to_string(edges) + " edges, more than a " +
                                        std::to_string(bytes.size()) + "-byte file can hold");
+  // OpenMesh's OM reader takes the halfedge and face indices it reads on
+  // trust and writes through them: a damaged or crafted file writes out of
+  // bounds, and no check short of parsing the whole format ourselves rules
+  // that out. Until we read OM ourselves, it is refused.
+  throw InputError::inFile(file,
+                           "OM files are not read: OpenMesh's OM reader is not safe on a damaged "
+                           "file; save the mesh as PLY or OFF");
 }
 
 }  // namespace meshtrace::formats

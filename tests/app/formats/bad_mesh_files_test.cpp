@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "app/formats/mesh_files.h"
 #include "formats/openmesh_reader.h"
+#include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/io/mesh_reader.h"
 #include "support/cli.h"
 #include "support/files.h"
@@ -131,6 +133,19 @@ INSTANTIATE_TEST_SUITE_P(Cases, BadMeshFiles, ::testing::ValuesIn(badMeshes()),
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
                          });
+
+// A well-formed OM file, as OpenMesh writes it, is refused too: its reader
+// is not safe on a damaged one, and nothing tells the two apart.
+TEST(OmFiles, AreRefusedNamingTheFileAndTheSafeFormats) {
+  formats::registerOpenMeshFormats();
+  const auto file = test::scratchDir() / "mesh.om";
+  test::writeMeshFile(makeIcosphere(Vec3(0, 0, 0), 1.0, 1), test::MeshFormat::Om, file);
+  MemoryBudget budget(defaultMemoryLimit());
+  const std::string message = test::inputErrorOf([&] { readMesh(file, budget); });
+  EXPECT_NE(message.find("mesh.om"), std::string::npos) << message;
+  EXPECT_NE(message.find("OM files are not read"), std::string::npos) << message;
+  EXPECT_NE(message.find("PLY or OFF"), std::string::npos) << message;
+}
 
 TEST(BadMeshFilesCli, ASceneWithOneLeavesTheOutputAsItWas) {
   const auto dir = test::scratchDir();
