@@ -43,7 +43,9 @@ LoadedScene loadGeometry(const std::filesystem::path& file) {
     // The shading words rewritten in place: lines, and so the messages of
     // bad input, stay those of the file.
     const std::vector<Shading> flat(out.fileModes.size(), Shading::Flat);
-    out.scene = std::make_shared<const Scene>(parseScene(rewriteMeshModes(text, flat), file));
+    const std::vector<bool> visible(flat.size(), true);
+    out.scene = std::make_shared<const Scene>(parseScene(
+        rewriteMeshes(text, flat, visible, file.parent_path(), file.parent_path()), file));
   } else {
     auto scene = std::make_shared<Scene>(loadScene(file));
     out.fileModes.clear();

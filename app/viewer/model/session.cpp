@@ -84,8 +84,10 @@ bool SceneSession::meshesChanged() const {
   return false;
 }
 
-void SceneSession::saveModes(const std::filesystem::path& out) const {
-  saveSceneWithModes(file_, out, shadingModes());
+void SceneSession::saveMeshes(const std::filesystem::path& out, Existing existing) const {
+  std::vector<bool> visible;
+  for (const MeshState& m : meshes_) visible.push_back(m.visible);
+  saveSceneWithMeshes(file_, out, shadingModes(), visible, existing);
 }
 
 void SceneSession::resetCamera() {

@@ -11,6 +11,7 @@
 
 #include "viewer/model/geometry_load.h"
 #include "viewer/model/render_scene.h"
+#include "viewer/model/save_target.h"
 
 namespace meshtrace::viewer {
 
@@ -49,8 +50,9 @@ class SceneSession {
   void resetMeshes();
   std::vector<Shading> shadingModes() const;
   bool meshesChanged() const;
-  // Saves the scene file with the current shading modes; throws std::runtime_error.
-  void saveModes(const std::filesystem::path& out) const;
+  // Saves the scene file with the current shading modes, hidden meshes
+  // commented out (scene_writer.h); throws FileExists, std::runtime_error.
+  void saveMeshes(const std::filesystem::path& out, Existing existing) const;
 
   const CameraSpec& camera() const { return camera_; }
   void setCamera(const CameraSpec& camera) { camera_ = camera; }

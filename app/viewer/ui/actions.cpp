@@ -42,10 +42,7 @@ void openScene(ViewerState& state, const std::filesystem::path& file) {
   ref.current.reset();
   if (const auto found = findReference(file)) ref.path = *found;
   ref.pathField = ref.path.string();
-  const std::string stem = file.stem().string();
-  state.savePath = stem + "-render.png";
-  state.screenshotPath = stem + "-window.png";
-  state.sceneSavePath = (file.parent_path() / (stem + "-modes.sce")).string();
+  proposeSavePaths(state, file);
   // A load error shows in place of the image; the message line stays free.
   state.message.clear();
 }

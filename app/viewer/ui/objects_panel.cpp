@@ -6,7 +6,7 @@
 
 namespace meshtrace::viewer {
 
-void drawObjectsPanel(ViewerState& state) {
+void drawObjectsPanel(ViewerState& state, RenderDisplay& display) {
   SceneSession& session = state.session;
   if (!session.loaded()) {
     ImGui::TextDisabled("No scene loaded.");
@@ -55,14 +55,8 @@ void drawObjectsPanel(ViewerState& state) {
   ImGui::SetNextItemWidth(-110);
   ImGui::InputText("##scenesave", &state.sceneSavePath);
   ImGui::SameLine();
-  if (ImGui::Button("Save scene")) {
-    try {
-      session.saveModes(state.sceneSavePath);
-      setMessage(state, "saved " + state.sceneSavePath, false);
-    } catch (const std::exception& e) {
-      setMessage(state, e.what(), true);
-    }
-  }
+  if (ImGui::Button("Save scene")) save(state, display, SaveKind::Scene, Existing::Refuse);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Hidden meshes are saved as comment lines.");
 }
 
 }  // namespace meshtrace::viewer

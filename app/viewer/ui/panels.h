@@ -32,8 +32,17 @@ std::string meshNames(const SceneSession& session);
 std::string describeObject(const ViewerState& state, const RenderDisplay& display,
                            const PrimitiveRef& ref);
 
+// Saving (saving.cpp): saves the render, the window or the scene to its
+// path, made absolute; a file there is replaced only with Existing::Replace,
+// else the user is asked (drawOverwriteQuestion, once a frame).
+void save(ViewerState& state, RenderDisplay& display, SaveKind kind, Existing existing);
+void drawOverwriteQuestion(ViewerState& state, RenderDisplay& display);
+// New absolute paths for the saves of `scene`, in folders the user may
+// write to outside the course's data (save_target.h).
+void proposeSavePaths(ViewerState& state, const std::filesystem::path& scene);
+
 void drawScenePanel(ViewerState& state);                              // scene_panel.cpp
-void drawObjectsPanel(ViewerState& state);                            // objects_panel.cpp
+void drawObjectsPanel(ViewerState& state, RenderDisplay& display);    // objects_panel.cpp
 void drawRenderPanel(ViewerState& state, RenderDisplay& display);     // render_panel.cpp
 void drawImageView(ViewerState& state, RenderDisplay& display);       // image_view.cpp
 void drawInspectorPanel(ViewerState& state, RenderDisplay& display);  // inspector_panel.cpp

@@ -11,19 +11,12 @@ void drawSavePanel(ViewerState& state, RenderDisplay& display) {
   ImGui::InputText("##render", &state.savePath);
   ImGui::SameLine();
   ImGui::BeginDisabled(display.frame().width == 0);
-  if (ImGui::Button("Save render")) {
-    try {
-      writeImage(display.colorImage(), state.savePath);
-      setMessage(state, "saved " + state.savePath, false);
-    } catch (const std::exception& e) {
-      setMessage(state, e.what(), true);
-    }
-  }
+  if (ImGui::Button("Save render")) save(state, display, SaveKind::Render, Existing::Refuse);
   ImGui::EndDisabled();
   ImGui::SetNextItemWidth(-130);
   ImGui::InputText("##window", &state.screenshotPath);
   ImGui::SameLine();
-  if (ImGui::Button("Save window")) state.screenshotRequest = state.screenshotPath;
+  if (ImGui::Button("Save window")) save(state, display, SaveKind::Window, Existing::Refuse);
 }
 
 }  // namespace meshtrace::viewer

@@ -127,6 +127,13 @@ struct TimingStats {
   Clock::time_point actionTime() const { return frameInputAt.value_or(Clock::now()); }
 };
 
+// A save that would replace a file waits for the user's answer (saving.cpp).
+enum class SaveKind { Render, Window, Scene };
+struct OverwriteQuestion {
+  SaveKind kind;
+  std::filesystem::path path;
+};
+
 struct ViewerState {
   ViewerOptions options;
   std::filesystem::path executable;
@@ -153,7 +160,8 @@ struct ViewerState {
   ReferenceState reference;
   AbState ab;
   TimingStats timing;
-  std::string savePath, screenshotPath, sceneSavePath;
+  std::string savePath, screenshotPath, sceneSavePath;  // absolute, proposed new
+  std::optional<OverwriteQuestion> overwrite;
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn
   std::string message;            // last action's result
   bool messageIsError = false;

@@ -298,7 +298,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   drawScenePanel(state_);
   ImGui::Separator();
   ImGui::TextUnformatted("Objects");
-  drawObjectsPanel(state_);
+  drawObjectsPanel(state_, display_);
   endCapture();
   ImGui::End();
 
@@ -334,6 +334,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   if (section("Save", wanted(o, "save"))) drawSavePanel(state_, display_);
   endCapture();
   ImGui::End();
+  drawOverwriteQuestion(state_, display_);
   // A change made in this frame restarts the render now, not next frame.
   sync();
   state_.timing.frameInputAt.reset();

@@ -1,0 +1,101 @@
+// Saving the render, the window and the scene: each save refuses to replace
+// a file and asks first (drawOverwriteQuestion), and says the full path it
+// wrote.
+#include <imgui.h>
+
+#include "viewer/ui/panels.h"
+
+namespace meshtrace::viewer {
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path absoluteOf(const std::string& path) {
+  std::error_code ec;
+  const fs::path p = fs::absolute(path, ec);
+  return ec ? fs::path(path) : p.lexically_normal();
+}
+
+// A saved scene shows in the list: the folders holding it are scanned again,
+// and its own folder joins the list when none does.
+void rescanFor(ViewerState& state, const fs::path& saved) {
+  bool listed = false;
+  for (SceneFolder& f : state.folders) {
+    const fs::path rel = saved.lexically_relative(f.root);
+    if (rel.empty() || *rel.begin() == "..") continue;
+    f = scanFolder(f.root, f.title);
+    listed = true;
+  }
+  if (!listed) addFolder(state, saved.parent_path(), saved.parent_path().filename().string());
+}
+}  // namespace
+
+void save(ViewerState& state, RenderDisplay& display, SaveKind kind, Existing existing) {
+  const fs::path target = absoluteOf(kind == SaveKind::Render   ? state.savePath
+                                     : kind == SaveKind::Window ? state.screenshotPath
+                                                                : state.sceneSavePath);
+  try {
+    refuseExisting(target, existing);
+    switch (kind) {
+      case SaveKind::Render:
+        writeImage(display.colorImage(), target);
+        setMessage(state, "saved the render to " + target.string(), false);
+        break;
+      case SaveKind::Window:
+        // Written after the frame is drawn; the frame loop says where.
+        state.screenshotRequest = target.string();
+        break;
+      case SaveKind::Scene:
+        state.session.saveMeshes(target, Existing::Replace);
+        rescanFor(state, target);
+        setMessage(state, "saved the scene to " + target.string(), false);
+        break;
+    }
+  } catch (const FileExists&) {
+    state.overwrite = OverwriteQuestion{kind, target};
+  } catch (const std::exception& e) {
+    setMessage(state, e.what(), true);
+  }
+}
+
+void drawOverwriteQuestion(ViewerState& state, RenderDisplay& display) {
+  if (!state.overwrite) return;
+  const char* title = "Replace the file?";
+  if (!ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("%s exists.", state.overwrite->path.string().c_str());
+  ImGui::TextUnformatted("Replace it, or keep it and choose another name?");
+  if (ImGui::Button("Replace")) {
+    const SaveKind kind = state.overwrite->kind;
+    state.overwrite.reset();
+    ImGui::CloseCurrentPopup();
+    save(state, display, kind, Existing::Replace);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Keep it") || ImGui::IsKeyPressed(ImGuiKey_Escape)) {
+    setMessage(state, "not saved: " + state.overwrite->path.string() + " kept", false);
+    state.overwrite.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void proposeSavePaths(ViewerState& state, const fs::path& scene) {
+  const std::string stem = scene.stem().string();
+  std::vector<fs::path> candidates = userFolders();
+  const fs::path here = chooseSaveFolder(candidates, fs::temp_directory_path());
+  state.savePath = freeName(here, stem + "-render", ".png").string();
+  state.screenshotPath = freeName(here, stem + "-window", ".png").string();
+  // The scene beside its original when that folder is the user's own, so
+  // that its meshes' relative paths still hold; named there as the scene
+  // was (the message after saving gives the full path).
+  candidates.insert(candidates.begin(), scene.parent_path());
+  const fs::path folder = chooseSaveFolder(candidates, fs::temp_directory_path());
+  const fs::path name = freeName(folder, stem + "-modes", ".sce").filename();
+  state.sceneSavePath =
+      (folder == absoluteOf(scene.parent_path().string()) ? scene.parent_path() / name
+                                                          : folder / name)
+          .string();
+}
+
+}  // namespace meshtrace::viewer
