@@ -18,6 +18,7 @@ std::shared_ptr<const Scene> SceneSession::beginOpening(const std::filesystem::p
 void SceneSession::adopt(const LoadedScene& loaded) {
   opening_ = false;
   error_.clear();
+  reloadError_.clear();
   base_ = loaded.scene;
   loadMs_ = loaded.ms;
   meshes_.clear();
@@ -36,6 +37,34 @@ void SceneSession::adopt(const LoadedScene& loaded) {
   ++meshRevision_;
 }
 
+namespace {
+bool sameCamera(const CameraSpec& a, const CameraSpec& b) {
+  return a.eye == b.eye && a.center == b.center && a.up == b.up && a.fovyDegrees == b.fovyDegrees &&
+         a.width == b.width && a.height == b.height;
+}
+}  // namespace
+
+void SceneSession::adoptReload(const LoadedScene& loaded) {
+  const std::vector<MeshState> before = meshes_;
+  const CameraSpec camera = camera_;
+  const bool moved = base_ && !sameCamera(camera_, base_->camera.spec());
+  adopt(loaded);
+  if (moved) {
+    const CameraSpec file = camera_;
+    camera_ = camera;
+    camera_.width = file.width;
+    camera_.height = file.height;
+  }
+  for (std::size_t i = 0; i < meshes_.size(); ++i) {
+    for (const MeshState& b : before) {
+      if (b.name != meshes_[i].name) continue;
+      if (b.shading != b.fileShading) meshes_[i].shading = b.shading;
+      meshes_[i].visible = b.visible;
+    }
+  }
+  ++meshRevision_;
+}
+
 void SceneSession::fail(const std::string& error) {
   opening_ = false;
   base_.reset();
@@ -46,6 +75,7 @@ void SceneSession::fail(const std::string& error) {
 
 void SceneSession::clear() {
   error_.clear();
+  reloadError_.clear();
   opening_ = false;
   base_.reset();
   meshes_.clear();

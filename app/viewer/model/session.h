@@ -32,6 +32,15 @@ class SceneSession {
   // for bad input).
   void adopt(const LoadedScene& loaded);
   void fail(const std::string& error);
+  // The same file read again after it or a mesh changed: the scene is
+  // replaced, and what the user changed is kept where it still applies: a
+  // moved camera (the file's new one if it was not moved, the file's image
+  // size either way), and each mesh's switched mode and visibility, by name.
+  void adoptReload(const LoadedScene& loaded);
+  // The reload failed: the last good scene stays, with the reload's error
+  // (file:line for bad input) beside it until a reload succeeds.
+  void failReload(const std::string& error) { reloadError_ = error; }
+  const std::string& reloadError() const { return reloadError_; }
   void clear();
 
   bool opening() const { return opening_; }
@@ -70,7 +79,7 @@ class SceneSession {
 
  private:
   std::filesystem::path file_;
-  std::string error_;
+  std::string error_, reloadError_;
   bool opening_ = false;
   double loadMs_ = 0.0;
   std::shared_ptr<const Scene> base_;

@@ -18,6 +18,7 @@ void setMessage(ViewerState& state, const std::string& message, bool error) {
 void openScene(ViewerState& state, const std::filesystem::path& file) {
   state.timing.openedAt = state.timing.actionTime();
   state.retired.push_back(state.session.beginOpening(file));
+  state.reload.pending = false;
   SceneRequests& scenes = state.scenes;
   state.retired.push_back(std::exchange(scenes.preview, nullptr));
   state.retired.push_back(std::exchange(scenes.render, nullptr));

@@ -41,6 +41,16 @@ void drawOverwriteQuestion(ViewerState& state, RenderDisplay& display);
 // write to outside the course's data (save_target.h).
 void proposeSavePaths(ViewerState& state, const std::filesystem::path& scene);
 
+// Live reload (live_reload.cpp). Watches the open scene's file and meshes
+// (after an opening, successful or not); reloads the scene when one of them
+// changed (checkWatchedFiles) or when asked (reloadScene); the background
+// opening's answer to a reload goes to reloaded or reloadFailed.
+void watchOpenScene(ViewerState& state);
+void checkWatchedFiles(ViewerState& state);
+void reloadScene(ViewerState& state);
+void reloaded(ViewerState& state, const LoadedScene& loaded);
+void reloadFailed(ViewerState& state, const std::string& error);
+
 void drawScenePanel(ViewerState& state);                              // scene_panel.cpp
 void drawObjectsPanel(ViewerState& state, RenderDisplay& display);    // objects_panel.cpp
 void drawRenderPanel(ViewerState& state, RenderDisplay& display);     // render_panel.cpp

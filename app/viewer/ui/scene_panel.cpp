@@ -45,6 +45,11 @@ void drawScenePanel(ViewerState& state) {
   }
   if (state.browser) drawFolderBrowser(state);
   ImGui::TextDisabled("Drop a .sce file or a folder on the window to open it.");
+  if (const std::string& error = state.session.reloadError(); !error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.45f, 1));
+    ImGui::TextWrapped("Reload failed, the last good scene is kept:\n%s", error.c_str());
+    ImGui::PopStyleColor();
+  }
   for (SceneFolder& folder : state.folders) {
     ImGui::PushID(folder.root.string().c_str());
     const std::string header = folder.title + " (" + std::to_string(folder.scenes.size()) + ")";

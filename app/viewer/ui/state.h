@@ -17,6 +17,7 @@
 #include "viewer/gl/texture.h"
 #include "viewer/model/ab_compare.h"
 #include "viewer/model/background_task.h"
+#include "viewer/model/file_watch.h"
 #include "viewer/model/folder_browser.h"
 #include "viewer/model/frame_stats.h"
 #include "viewer/model/image_viewport.h"
@@ -113,6 +114,15 @@ struct AbState {
   std::uint64_t comparedJob = 0;         // the A render compared, or being compared
 };
 
+// Live reload (live_reload.cpp): the open scene's files, watched, and a
+// reload under way.
+struct LiveReload {
+  FileWatch watch;
+  bool pending = false;
+  std::string changed;  // the file whose change started the reload
+  std::chrono::steady_clock::time_point nextCheck;
+};
+
 struct TimingStats {
   using Clock = std::chrono::steady_clock;
   // When the input of the frame being built was taken: what the user does in
@@ -160,6 +170,7 @@ struct ViewerState {
   ReferenceState reference;
   AbState ab;
   TimingStats timing;
+  LiveReload reload;
   std::string savePath, screenshotPath, sceneSavePath;  // absolute, proposed new
   std::optional<OverwriteQuestion> overwrite;
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn

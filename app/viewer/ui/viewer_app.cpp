@@ -185,17 +185,28 @@ void ViewerApp::receive() {
   for (auto& object : state_.retired) display_.dispose(std::move(object));
   state_.retired.clear();
   for (Arrival& a : scenes.pipeline->take()) {
-    if (!a.error.empty()) {
+    if (state_.reload.pending && !a.error.empty()) {
+      reloadFailed(state_, a.error);
+      continue;
+    }
+    if (state_.reload.pending && a.loaded) {
+      reloaded(state_, *a.loaded);
+      // The opening's render scene has the file's modes: kept only when the
+      // user's switches are those (else requestRenderScene asks for theirs).
+      if (!state_.session.meshesChanged()) scenes.meshRevision = state_.session.meshRevision();
+      state_.timing.loadMs = a.loaded->ms;
+    } else if (!a.error.empty()) {
       state_.session.fail(a.error);
       if (!state_.options.headless) std::fprintf(stderr, "error: %s\n", a.error.c_str());
       display_.dispose(std::exchange(scenes.preview, nullptr));
       display_.dispose(std::exchange(scenes.render, nullptr));
       display_.stop();
       state_.sceneOptionsPending = false;
+      watchOpenScene(state_);
       continue;
-    }
-    if (a.loaded) {
+    } else if (a.loaded) {
       state_.session.adopt(*a.loaded);
+      watchOpenScene(state_);
       scenes.meshRevision = state_.session.meshRevision();
       state_.timing.loadMs = a.loaded->ms;
       state_.crosscheck.reports.assign(state_.session.meshes().size(), std::nullopt);
@@ -275,6 +286,12 @@ void ViewerApp::sync() {
 
 void ViewerApp::frame(Clock::time_point inputAt) {
   state_.timing.frameInputAt = inputAt;
+  // The watched files are looked at a few times a second: an edit shows
+  // soon after it is saved, and the stat calls cost the frames nothing.
+  if (inputAt >= state_.reload.nextCheck) {
+    state_.reload.nextCheck = inputAt + std::chrono::milliseconds(kWatchIntervalMs);
+    checkWatchedFiles(state_);
+  }
   renderingAtFrameStart_ = display_.status().running;
   const ImGuiIO& io = ImGui::GetIO();
   if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 ||

@@ -74,6 +74,7 @@ class ViewerApp {
   static constexpr double kOpeningWaitMs = 100.0;
   static constexpr double kRestartWaitMs = 30.0;
   static constexpr int kFramesAfterInput = 2;
+  static constexpr int kWatchIntervalMs = 200;
 
  private:
   void applyOptions();
