@@ -20,6 +20,7 @@ void SceneSession::adopt(const LoadedScene& loaded) {
   error_.clear();
   reloadError_.clear();
   base_ = loaded.scene;
+  warnings_ = base_->warnings;
   loadMs_ = loaded.ms;
   meshes_.clear();
   std::map<std::string, int> seen;
@@ -69,6 +70,7 @@ void SceneSession::fail(const std::string& error) {
   opening_ = false;
   base_.reset();
   meshes_.clear();
+  warnings_.clear();
   error_ = error;
   ++meshRevision_;
 }
@@ -79,6 +81,7 @@ void SceneSession::clear() {
   opening_ = false;
   base_.reset();
   meshes_.clear();
+  warnings_.clear();
   loadMs_ = 0.0;
   ++meshRevision_;
 }

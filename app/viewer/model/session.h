@@ -41,6 +41,9 @@ class SceneSession {
   // (file:line for bad input) beside it until a reload succeeds.
   void failReload(const std::string& error) { reloadError_ = error; }
   const std::string& reloadError() const { return reloadError_; }
+  // What the scene reader warned of for the scene shown (scene.h), e.g. an
+  // up vector parallel to the view: each names the file and line.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   void clear();
 
   bool opening() const { return opening_; }
@@ -84,6 +87,7 @@ class SceneSession {
   double loadMs_ = 0.0;
   std::shared_ptr<const Scene> base_;
   std::vector<MeshState> meshes_;
+  std::vector<std::string> warnings_;
   CameraSpec camera_;
   std::uint64_t meshRevision_ = 0;
 };

@@ -12,7 +12,23 @@ namespace meshtrace::viewer {
 void setMessage(ViewerState& state, const std::string& message, bool error) {
   state.message = message;
   state.messageIsError = error;
+  state.messageIsWarning = false;
   std::fprintf(error ? stderr : stdout, "%s\n", message.c_str());
+}
+
+void showSceneWarnings(ViewerState& state, const std::string& before) {
+  const std::vector<std::string>& warnings = state.session.warnings();
+  if (warnings.empty()) {
+    if (!before.empty()) setMessage(state, before, false);
+    return;
+  }
+  std::string text = before.empty() ? "" : before + "; ";
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+    text += (i ? "; warning: " : "warning: ") + warnings[i];
+  state.message = text;
+  state.messageIsError = false;
+  state.messageIsWarning = true;
+  std::fprintf(stderr, "%s\n", text.c_str());
 }
 
 void openScene(ViewerState& state, const std::filesystem::path& file) {

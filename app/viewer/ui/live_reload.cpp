@@ -48,10 +48,8 @@ void reloaded(ViewerState& state, const LoadedScene& loaded) {
   state.crosscheck.task->cancel();
   state.crosscheck.reports.assign(state.session.meshes().size(), std::nullopt);
   watchOpenScene(state);
-  setMessage(
-      state,
-      "reloaded " + state.session.file().string() + " (" + state.reload.changed + " changed)",
-      false);
+  showSceneWarnings(state, "reloaded " + state.session.file().string() + " (" +
+                               state.reload.changed + " changed)");
 }
 
 void reloadFailed(ViewerState& state, const std::string& error) {

@@ -21,6 +21,9 @@ void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::
 // A path typed or dropped: a .sce opens, a folder joins the list.
 void openPath(ViewerState& state, const std::filesystem::path& path);
 void setMessage(ViewerState& state, const std::string& message, bool error);
+// The message line: `before` (if any) and the scene's warnings, shown as a
+// warning; just `before` when there are none.
+void showSceneWarnings(ViewerState& state, const std::string& before = {});
 // Puts the camera's .sce line on the clipboard (the system's, through ImGui
 // in a window) and says so in the message line.
 void copyCameraLine(ViewerState& state);

@@ -2,6 +2,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "viewer/ui/message_colors.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -45,9 +46,16 @@ void drawScenePanel(ViewerState& state) {
   }
   if (state.browser) drawFolderBrowser(state);
   ImGui::TextDisabled("Drop a .sce file or a folder on the window to open it.");
+  // Errors and warnings about the open scene stay here while it is open.
   if (const std::string& error = state.session.reloadError(); !error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.45f, 1));
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
     ImGui::TextWrapped("Reload failed, the last good scene is kept:\n%s", error.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (!state.session.warnings().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+    for (const std::string& w : state.session.warnings())
+      ImGui::TextWrapped("warning: %s", w.c_str());
     ImGui::PopStyleColor();
   }
   for (SceneFolder& folder : state.folders) {

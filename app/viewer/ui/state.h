@@ -176,6 +176,7 @@ struct ViewerState {
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn
   std::string message;            // last action's result
   bool messageIsError = false;
+  bool messageIsWarning = false;
   // The command line's settings that apply to the scene (meshes, pixel,
   // reference) wait for it to load; what they name that it lacks is listed
   // here (a headless run then fails).

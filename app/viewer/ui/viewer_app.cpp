@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "viewer/model/observer.h"
+#include "viewer/ui/message_colors.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -206,6 +207,7 @@ void ViewerApp::receive() {
       continue;
     } else if (a.loaded) {
       state_.session.adopt(*a.loaded);
+      showSceneWarnings(state_);
       watchOpenScene(state_);
       scenes.meshRevision = state_.session.meshRevision();
       state_.timing.loadMs = a.loaded->ms;
@@ -327,8 +329,9 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar);
   beginCapture();
   if (!state_.message.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, state_.messageIsError ? ImVec4(1, 0.45f, 0.45f, 1)
-                                                               : ImVec4(0.6f, 1, 0.6f, 1));
+    ImGui::PushStyleColor(ImGuiCol_Text, state_.messageIsError     ? kErrorColor
+                                         : state_.messageIsWarning ? kWarningColor
+                                                                   : ImVec4(0.6f, 1, 0.6f, 1));
     ImGui::TextWrapped("%s", state_.message.c_str());
     ImGui::PopStyleColor();
   }

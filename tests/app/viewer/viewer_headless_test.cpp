@@ -137,5 +137,20 @@ TEST(ViewerHeadless, WritesTheSnapshotWhenAllIsWell) {
   EXPECT_NE(test::readFileBytes(dir / "out.txt").find("pixel (88, 109) pinned"), std::string::npos);
 }
 
+TEST(ViewerHeadless, ShowsTheScenesWarningsInTheWindow) {
+  const auto dir = sceneCopy();
+  std::string text = test::readFileBytes(dir / "viewer_test.sce");
+  const std::string up = "0 1 0  45";
+  text.replace(text.find(up), up.size(), "0 -1.65 -5.5  45");  // up along the view
+  test::writeFile(dir / "viewer_test.sce", text);
+  test::expectSuccess(viewerTool(), headless(dir, {(dir / "viewer_test.sce").string()}), dir);
+  const std::string shown = test::readFileBytes(dir / "out.txt");
+  std::size_t count = 0;
+  for (std::size_t at = shown.find("parallel to the view"); at != std::string::npos;
+       at = shown.find("parallel to the view", at + 1))
+    ++count;
+  EXPECT_EQ(count, 2u) << "in the scene panel and on the message line:\n" << shown;
+}
+
 }  // namespace
 }  // namespace meshtrace
