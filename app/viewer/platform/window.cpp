@@ -12,10 +12,20 @@
 namespace meshtrace::viewer {
 
 namespace {
-ViewerApp* dropTarget = nullptr;
+ViewerApp* windowApp = nullptr;
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
-  if (dropTarget) dropPaths(*dropTarget, count, paths);
+  if (windowApp) dropPaths(*windowApp, count, paths);
+}
+
+// ImGui's backend calls this after its own. Presses are queued for the
+// shortcuts: ImGui 1.86 sees only the keys down at a frame's start, and a
+// quick press and release between two frames would be lost.
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+  if (windowApp && action == GLFW_PRESS)
+    windowApp->state().keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0,
+                                             (mods & GLFW_MOD_SHIFT) != 0,
+                                             (mods & GLFW_MOD_ALT) != 0});
 }
 
 void* loadProc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
@@ -44,6 +54,7 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     return 1;
   }
   initImGui();
+  glfwSetKeyCallback(window, onKey);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   {
     int width, height;
@@ -52,13 +63,14 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     // The render reaching its first or exact image posts an empty event,
     // which ends the wait for input.
     ViewerApp app(options, executable, [] { glfwPostEmptyEvent(); });
-    dropTarget = &app;
+    windowApp = &app;
     glfwSetDropCallback(window, onDrop);
     FrameHost host;
     int idleFrames = 0;
     host.keepRunning = [&] {
       idleFrames = app.idle() ? idleFrames + 1 : 0;
-      return !glfwWindowShouldClose(window) && !(options.quitWhenDone && idleFrames > 3);
+      return !glfwWindowShouldClose(window) && !app.state().quitRequested &&
+             !(options.quitWhenDone && idleFrames > 3);
     };
     host.waitForInput = [](double ms) {
       if (ms > 0)
@@ -74,7 +86,7 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     host.present = [&] { glfwSwapBuffers(window); };
     runFrames(app, host);
     if (options.stats) app.printStats();
-    dropTarget = nullptr;
+    windowApp = nullptr;
   }
   ImGui_ImplGlfw_Shutdown();
   shutdownImGui();

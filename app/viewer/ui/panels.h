@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "viewer/model/projection.h"
+#include "viewer/model/shortcuts.h"
 #include "viewer/ui/render_display.h"
 #include "viewer/ui/state.h"
 
@@ -53,6 +54,14 @@ void checkWatchedFiles(ViewerState& state);
 void reloadScene(ViewerState& state);
 void reloaded(ViewerState& state, const LoadedScene& loaded);
 void reloadFailed(ViewerState& state, const std::string& error);
+
+// The menu bar, the keys and the help overlay (commands.cpp), from the
+// shortcut table (shortcuts.h). runCommand returns false for a command it
+// does not know.
+bool runCommand(ViewerState& state, RenderDisplay& display, const Shortcut& shortcut);
+void handleShortcuts(ViewerState& state, RenderDisplay& display);
+void drawMenuBar(ViewerState& state, RenderDisplay& display);
+void drawHelpOverlay(ViewerState& state);
 
 void drawScenePanel(ViewerState& state);                              // scene_panel.cpp
 void drawObjectsPanel(ViewerState& state, RenderDisplay& display);    // objects_panel.cpp

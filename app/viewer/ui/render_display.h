@@ -51,6 +51,8 @@ class RenderDisplay {
             const RenderWish& wish, Clock::time_point requestedAt);
   // Stops the render and forgets its image.
   void stop();
+  // The next sync starts the render again from its first pass.
+  void restart() { started_ = false; }
   // While the UI thread builds and draws a frame, one render thread waits
   // (when the threads fill the cores): the frame gets a core of its own
   // instead of a third of two.

@@ -33,6 +33,8 @@ void drawFolderBrowser(ViewerState& state) {
 
 void drawScenePanel(ViewerState& state) {
   ImGui::SetNextItemWidth(-60);
+  if (state.focusPathField) ImGui::SetKeyboardFocusHere();
+  state.focusPathField = false;
   const bool entered = ImGui::InputTextWithHint("##path", ".sce file or folder", &state.pathField,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();

@@ -144,6 +144,12 @@ struct OverwriteQuestion {
   std::filesystem::path path;
 };
 
+// A key pressed in the window, with its modifiers: `code` is GLFW's.
+struct KeyPress {
+  int code;
+  bool ctrl, shift, alt;
+};
+
 struct ViewerState {
   ViewerOptions options;
   std::filesystem::path executable;
@@ -177,6 +183,11 @@ struct ViewerState {
   std::string message;            // last action's result
   bool messageIsError = false;
   bool messageIsWarning = false;
+  // The menu bar and keys (commands.cpp).
+  bool helpOpen = false, aboutOpen = false;
+  bool quitRequested = false;
+  bool focusPathField = false;       // the next frame puts the keyboard in the path field
+  std::vector<KeyPress> keyPresses;  // since the last frame, for the shortcuts
   // The command line's settings that apply to the scene (meshes, pixel,
   // reference) wait for it to load; what they name that it lacks is listed
   // here (a headless run then fails).

@@ -22,10 +22,11 @@ bool wanted(const ViewerOptions& o, const char* panel) {
   return false;
 }
 
-void placeWindow(float x, float width) {
+// Below the menu bar, `top` pixels high.
+void placeWindow(float x, float width, float top) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(x, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(width, display.y), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(x, top), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, display.y - top), ImGuiCond_Always);
 }
 
 bool section(const char* title, bool open) {
@@ -308,10 +309,13 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   state_.regions.clear();
   state_.frameText.clear();
 
+  handleShortcuts(state_, display_);
+  drawMenuBar(state_, display_);
+  const float top = ImGui::GetFrameHeight();
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const float leftWidth = std::clamp(0.22f * size.x, 230.0f, 320.0f);
   const float rightWidth = std::clamp(0.32f * size.x, 330.0f, 440.0f);
-  placeWindow(0, leftWidth);
+  placeWindow(0, leftWidth, top);
   ImGui::Begin("Scenes", nullptr, kPanelFlags);
   beginCapture();
   drawScenePanel(state_);
@@ -321,7 +325,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   endCapture();
   ImGui::End();
 
-  placeWindow(leftWidth, size.x - leftWidth - rightWidth);
+  placeWindow(leftWidth, size.x - leftWidth - rightWidth, top);
   const std::string title =
       (state_.session.file().empty() ? std::string("No scene")
                                      : state_.session.file().filename().string()) +
@@ -339,7 +343,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   endCapture();
   ImGui::End();
 
-  placeWindow(size.x - rightWidth, rightWidth);
+  placeWindow(size.x - rightWidth, rightWidth, top);
   ImGui::Begin("Details", nullptr, kPanelFlags);
   beginCapture();
   const ViewerOptions& o = state_.options;
@@ -355,6 +359,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   endCapture();
   ImGui::End();
   drawOverwriteQuestion(state_, display_);
+  drawHelpOverlay(state_);
   // A change made in this frame restarts the render now, not next frame.
   sync();
   state_.timing.frameInputAt.reset();
