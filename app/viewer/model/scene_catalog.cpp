@@ -21,23 +21,26 @@ SceneFolder scanFolder(const fs::path& root, const std::string& title) {
   return folder;
 }
 
-std::vector<std::pair<fs::path, std::string>> defaultSceneRoots(const fs::path& executable) {
-  std::vector<fs::path> bases{fs::current_path()};
+std::vector<std::pair<fs::path, std::string>> defaultSceneRoots(const fs::path& executable,
+                                                                const fs::path& cwd) {
+  std::vector<fs::path> bases;
   std::error_code ec;
   const fs::path exe = fs::weakly_canonical(executable, ec);
   // build/bin/viewer: the checkout is two folders up.
   if (!ec && exe.has_parent_path()) bases.push_back(exe.parent_path().parent_path().parent_path());
+  bases.push_back(cwd);
   std::vector<std::pair<fs::path, std::string>> roots;
-  const auto add = [&](const fs::path& p, const std::string& title) {
+  const auto add = [&](const fs::path& p) {
     if (!fs::is_directory(p, ec)) return;
     const fs::path canonical = fs::weakly_canonical(p, ec);
     for (const auto& r : roots)
       if (r.first == canonical) return;
-    roots.emplace_back(canonical, title);
+    roots.emplace_back(canonical,
+                       (canonical.parent_path().filename() / canonical.filename()).string());
   };
   for (const fs::path& base : bases) {
-    add(base / "scenes", "our scenes");
-    add(base.parent_path() / "shared" / "seed" / "scenes", "seed scenes");
+    add(base / "scenes");
+    add(base.parent_path() / "shared" / "seed" / "scenes");
   }
   return roots;
 }

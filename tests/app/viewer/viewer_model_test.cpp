@@ -350,6 +350,26 @@ TEST(SceneCatalog, ListsScenesBelowAFolder) {
   EXPECT_FALSE(scanFolder(test::sourceDir() / "no-such-folder", "x").error.empty());
 }
 
+TEST(SceneCatalog, DefaultFoldersComeInOneOrderWhereverTheViewerStartsTitledByFolder) {
+  const fs::path dir = fs::weakly_canonical(test::scratchDir());
+  const fs::path checkout = dir / "course" / "meshtrace", elsewhere = dir / "work";
+  for (const fs::path& d : {checkout / "scenes", checkout / "build/bin",
+                            dir / "course/shared/seed/scenes", elsewhere / "scenes"})
+    fs::create_directories(d);
+  const fs::path exe = checkout / "build/bin/viewer";
+  using Roots = std::vector<std::pair<fs::path, std::string>>;
+  const Roots fromCheckout = defaultSceneRoots(exe, checkout);
+  EXPECT_EQ(fromCheckout, (Roots{{checkout / "scenes", "meshtrace/scenes"},
+                                 {dir / "course/shared/seed/scenes", "seed/scenes"}}));
+  const Roots fromElsewhere = defaultSceneRoots(exe, elsewhere);
+  ASSERT_EQ(fromElsewhere.size(), 3u);
+  EXPECT_EQ(Roots(fromElsewhere.begin(), fromElsewhere.begin() + 2), fromCheckout)
+      << "the checkout's folders first, wherever the viewer starts";
+  EXPECT_EQ(fromElsewhere[2],
+            (std::pair<fs::path, std::string>{elsewhere / "scenes", "work/scenes"}))
+      << "another scenes/ folder is titled by its own folder";
+}
+
 TEST(ReferenceLookup, FindsExpectedResultsBesideTheSceneFolders) {
   const auto dir = test::scratchDir();
   fs::create_directories(dir / "scenes/demo");
