@@ -64,6 +64,7 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     // which ends the wait for input.
     ViewerApp app(options, executable, [] { glfwPostEmptyEvent(); });
     windowApp = &app;
+    app.useSettings(settingsFile());
     glfwSetDropCallback(window, onDrop);
     FrameHost host;
     int idleFrames = 0;

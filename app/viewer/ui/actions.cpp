@@ -31,6 +31,16 @@ void showSceneWarnings(ViewerState& state, const std::string& before) {
   std::fprintf(stderr, "%s\n", text.c_str());
 }
 
+void rememberScene(ViewerState& state) {
+  if (state.settingsPath.empty()) return;
+  addRecent(state.settings, state.session.file());
+  try {
+    saveSettings(state.settings, state.settingsPath);
+  } catch (const std::exception& e) {
+    setMessage(state, std::string("settings not saved: ") + e.what(), true);
+  }
+}
+
 void openScene(ViewerState& state, const std::filesystem::path& file) {
   state.timing.openedAt = state.timing.actionTime();
   state.retired.push_back(state.session.beginOpening(file));

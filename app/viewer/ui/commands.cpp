@@ -100,12 +100,26 @@ void handleShortcuts(ViewerState& state, RenderDisplay& display) {
       if (pressed(c, presses)) runCommand(state, display, s);
 }
 
+namespace {
+// File > Open recent: the scenes opened last, newest first.
+void drawRecentMenu(ViewerState& state) {
+  if (!ImGui::BeginMenu("Open recent")) return;
+  if (state.settings.recent.empty()) ImGui::MenuItem("(none yet)", nullptr, false, false);
+  std::optional<std::filesystem::path> chosen;
+  for (const std::filesystem::path& p : state.settings.recent)
+    if (ImGui::MenuItem(p.string().c_str())) chosen = p;
+  ImGui::EndMenu();
+  if (chosen) openScene(state, *chosen);
+}
+}  // namespace
+
 void drawMenuBar(ViewerState& state, RenderDisplay& display) {
   if (!ImGui::BeginMainMenuBar()) return;
   for (const char* menu : {"File", "View", "Render", "Help"}) {
     if (!ImGui::BeginMenu(menu)) continue;
     for (const Shortcut& s : shortcuts()) {
       if (s.menu != menu) continue;
+      if (s.command == Command::Reload) drawRecentMenu(state);
       const bool checked = s.command == Command::ShowView && state.view == View(s.view);
       if (ImGui::MenuItem(s.label.c_str(), keysLabel(s).c_str(), checked))
         runCommand(state, display, s);

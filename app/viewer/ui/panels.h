@@ -22,6 +22,9 @@ void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::
 // A path typed or dropped: a .sce opens, a folder joins the list.
 void openPath(ViewerState& state, const std::filesystem::path& path);
 void setMessage(ViewerState& state, const std::string& message, bool error);
+// Puts the open scene first among the recent ones and saves the settings
+// (when the app keeps any).
+void rememberScene(ViewerState& state);
 // The message line: `before` (if any) and the scene's warnings, shown as a
 // warning; just `before` when there are none.
 void showSceneWarnings(ViewerState& state, const std::string& before = {});

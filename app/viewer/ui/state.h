@@ -26,6 +26,7 @@
 #include "viewer/model/scene_catalog.h"
 #include "viewer/model/scene_pipeline.h"
 #include "viewer/model/session.h"
+#include "viewer/model/settings.h"
 #include "viewer/model/views.h"
 #include "viewer/ui/render_display.h"
 
@@ -188,6 +189,10 @@ struct ViewerState {
   bool quitRequested = false;
   bool focusPathField = false;       // the next frame puts the keyboard in the path field
   std::vector<KeyPress> keyPresses;  // since the last frame, for the shortcuts
+  // Remembered between runs in settingsPath; empty (tests, headless): not
+  // read or written.
+  ViewerSettings settings;
+  std::filesystem::path settingsPath;
   // The command line's settings that apply to the scene (meshes, pixel,
   // reference) wait for it to load; what they name that it lacks is listed
   // here (a headless run then fails).

@@ -52,6 +52,12 @@ ViewerApp::ViewerApp(const ViewerOptions& options, const std::filesystem::path& 
   sync();  // start loading now, not after the first frame's GL set-up
 }
 
+void ViewerApp::useSettings(const std::filesystem::path& file) {
+  state_.settingsPath = file;
+  state_.settings = loadSettings(file);
+  if (state_.session.loaded()) rememberScene(state_);
+}
+
 void ViewerApp::applyOptions() {
   const ViewerOptions& o = state_.options;
   state_.view = o.view;
@@ -208,6 +214,7 @@ void ViewerApp::receive() {
       continue;
     } else if (a.loaded) {
       state_.session.adopt(*a.loaded);
+      rememberScene(state_);
       showSceneWarnings(state_);
       watchOpenScene(state_);
       scenes.meshRevision = state_.session.meshRevision();

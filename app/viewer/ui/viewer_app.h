@@ -68,6 +68,10 @@ class ViewerApp {
   void captureText(bool on) { captureText_ = on; }
   void printStats() const;
 
+  // Reads the settings from `file` and writes them back there as they
+  // change (the real window; tests and headless runs keep none).
+  void useSettings(const std::filesystem::path& file);
+
   ViewerState& state() { return state_; }
   RenderDisplay& display() { return display_; }
 
