@@ -3,6 +3,8 @@
 #include <charconv>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "meshtrace/io/scene_parser.h"
+
 namespace meshtrace::viewer {
 
 namespace {
@@ -70,6 +72,10 @@ std::string cameraLine(const CameraSpec& c) {
   add(std::to_string(c.width));
   add(std::to_string(c.height));
   return s;
+}
+
+CameraSpec parseCameraLine(const std::string& line) {
+  return parseScene(line, "pasted").camera.spec();
 }
 
 }  // namespace meshtrace::viewer

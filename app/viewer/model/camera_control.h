@@ -23,5 +23,9 @@ bool sameCamera(const CameraSpec& a, const CameraSpec& b);
 
 // "camera ex ey ez cx cy cz ux uy uz fovy width height", shortest round-trip numbers.
 std::string cameraLine(const CameraSpec& camera);
+// The camera of such a line (pasted: surrounding blanks and a trailing
+// comment allowed), read by the scene reader. Throws what it throws for a
+// bad line (InputError, naming "pasted" and the problem).
+CameraSpec parseCameraLine(const std::string& line);
 
 }  // namespace meshtrace::viewer

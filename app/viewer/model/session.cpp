@@ -3,6 +3,7 @@
 #include <map>
 #include <utility>
 
+#include "viewer/model/camera_control.h"
 #include "viewer/model/scene_writer.h"
 
 namespace meshtrace::viewer {
@@ -37,13 +38,6 @@ void SceneSession::adopt(const LoadedScene& loaded) {
   camera_ = base_->camera.spec();
   ++meshRevision_;
 }
-
-namespace {
-bool sameCamera(const CameraSpec& a, const CameraSpec& b) {
-  return a.eye == b.eye && a.center == b.center && a.up == b.up && a.fovyDegrees == b.fovyDegrees &&
-         a.width == b.width && a.height == b.height;
-}
-}  // namespace
 
 void SceneSession::adoptReload(const LoadedScene& loaded) {
   const std::vector<MeshState> before = meshes_;

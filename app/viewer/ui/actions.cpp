@@ -100,6 +100,17 @@ void copyCameraLine(ViewerState& state) {
   setMessage(state, "copied: " + line, false);
 }
 
+void pasteCameraLine(ViewerState& state) {
+  if (!state.session.loaded()) return;
+  const char* text = ImGui::GetClipboardText();
+  try {
+    state.session.setCamera(parseCameraLine(text ? text : ""));
+    setMessage(state, "pasted: " + cameraLine(state.session.camera()), false);
+  } catch (const std::exception& e) {
+    setMessage(state, std::string("not a camera line: ") + e.what(), true);
+  }
+}
+
 std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name) {
   const auto& meshes = session.meshes();
   for (std::size_t i = 0; i < meshes.size(); ++i)

@@ -31,6 +31,8 @@ void showSceneWarnings(ViewerState& state, const std::string& before = {});
 // Puts the camera's .sce line on the clipboard (the system's, through ImGui
 // in a window) and says so in the message line.
 void copyCameraLine(ViewerState& state);
+// Sets the camera from a `camera` line on the clipboard, or says why not.
+void pasteCameraLine(ViewerState& state);
 // A mesh named by the command line: its name (file stem) or index.
 std::optional<std::size_t> findMesh(const SceneSession& session, const std::string& name);
 // " (its meshes: ball, box)", for a message about a mesh name not found.

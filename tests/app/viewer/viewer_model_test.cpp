@@ -370,6 +370,21 @@ TEST(SceneCatalog, DefaultFoldersComeInOneOrderWhereverTheViewerStartsTitledByFo
       << "another scenes/ folder is titled by its own folder";
 }
 
+TEST(CameraControl, APastedCameraLineReadsAsTheSceneReaderReadsIt) {
+  CameraSpec c;
+  c.eye = Vec3(0.1, 2.25, -5.0);
+  c.center = Vec3(0.0, 0.5, 0.0);
+  c.fovyDegrees = 37.5;
+  c.width = 320;
+  c.height = 200;
+  const CameraSpec back = parseCameraLine("  " + cameraLine(c) + "  # copied\n");
+  EXPECT_TRUE(sameCamera(back, c)) << cameraLine(back);
+  for (const char* bad :
+       {"", "camera 0 0 5 0 0 0 0 1 0 45 320", "sphere 0 0 0 1",
+        "camera 0 0 5 0 0 0 0 1 0 45 320 200 7", "camera 0 0 5 0 0 5 0 1 0 45 8 6"})
+    EXPECT_THROW(parseCameraLine(bad), std::exception) << bad;
+}
+
 TEST(ReferenceLookup, FindsExpectedResultsBesideTheSceneFolders) {
   const auto dir = test::scratchDir();
   fs::create_directories(dir / "scenes/demo");
