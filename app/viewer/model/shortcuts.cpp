@@ -28,6 +28,7 @@ std::vector<Shortcut> makeTable() {
       {"View", "Zoom in", Command::ZoomIn, {{"="}}},
       {"View", "Zoom out", Command::ZoomOut, {{"-"}}},
       {"View", "Unpin the pixel", Command::Unpin, {{"Esc"}}},
+      {"Render", "Pause or resume the render", Command::PauseResume, {{"Space"}}},
       {"Render", "Restart the render", Command::Restart, {{"R"}}},
       {"Render", "More AA samples", Command::MoreSamples, {{"A"}}},
       {"Render", "Fewer AA samples", Command::FewerSamples, {{"A", false, true}}},

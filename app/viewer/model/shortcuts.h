@@ -21,6 +21,7 @@ enum class Command {
   ZoomOut,
   Unpin,
   Restart,
+  PauseResume,
   MoreSamples,
   FewerSamples,
   Help,

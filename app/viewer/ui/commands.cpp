@@ -81,6 +81,7 @@ bool runCommand(ViewerState& state, RenderDisplay& display, const Shortcut& shor
         state.pinned.reset();
       return true;
     case Command::Restart: display.restart(); return true;
+    case Command::PauseResume: display.setPaused(!display.paused()); return true;
     case Command::MoreSamples:
       state.extraSamples = std::min(16, std::max(1, state.extraSamples * 2));
       return true;

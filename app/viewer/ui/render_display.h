@@ -56,8 +56,15 @@ class RenderDisplay {
   // While the UI thread builds and draws a frame, one render thread waits
   // (when the threads fill the cores): the frame gets a core of its own
   // instead of a third of two.
-  void frameBegins() { renderer_.pauseWorkers(coreForFrames_); }
-  void frameEnds() { renderer_.pauseWorkers(0); }
+  void frameBegins() { renderer_.pauseWorkers(paused_ ? threads() : coreForFrames_); }
+  void frameEnds() { renderer_.pauseWorkers(paused_ ? threads() : 0); }
+  // Paused, every render thread waits between pixels, this render's and
+  // the next's, until resumed.
+  void setPaused(bool paused) {
+    paused_ = paused;
+    renderer_.pauseWorkers(paused_ ? threads() : 0);
+  }
+  bool paused() const { return paused_; }
   // Pulls finished tiles and updates the textures, within a few ms (what
   // does not fit waits for the next call); `deviation` supplies the
   // deviation data (the depth and cost ranges are tracked here).
@@ -109,6 +116,7 @@ class RenderDisplay {
   Disposer disposer_;
   ProgressiveRenderer renderer_;
   int coreForFrames_ = 0;  // workers paused during a frame
+  bool paused_ = false;
   ProgressiveFrame frame_;
   ProgressiveStatus frameStatus_;
   bool showsImage_ = false;

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "meshtrace/render/inspect.h"
+#include "viewer/model/render_progress.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -31,22 +32,28 @@ void choose(const char* title, Value& value, std::initializer_list<Value> values
 void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
   const ProgressiveStatus s = display.status();
   if (display.active()) {
-    char overlayText[64];
+    char overlayText[96];
     const bool preview = display.renderScene() && display.renderScene()->preview;
     if (preview)
       std::snprintf(
           overlayText, sizeof overlayText, "%s",
           s.finished ? "preview: first pass, while the scene is made" : "preview: first pass");
-    else if (s.exactDone)
-      std::snprintf(overlayText, sizeof overlayText, "exact%s, %d sample%s per pixel",
-                    s.finished ? "" : " + AA", s.samplesPerPixel,
-                    s.samplesPerPixel == 1 ? "" : "s");
-    else
+    else if (s.exactDone && s.finished)
+      std::snprintf(overlayText, sizeof overlayText, "exact, %d sample%s per pixel",
+                    s.samplesPerPixel, s.samplesPerPixel == 1 ? "" : "s");
+    else if (s.exactDone) {
+      const std::optional<double> left = aaTimeLeftMs(s);
+      std::snprintf(overlayText, sizeof overlayText, "AA: %d of %d samples%s%s", s.samplesPerPixel,
+                    1 + state.extraSamples, left ? ", " : "",
+                    left ? (ms(state, *left) + " left").c_str() : "");
+    } else
       std::snprintf(overlayText, sizeof overlayText, "pass %d of %d, %.0f%%", s.passesDone + 1,
                     s.passCount, 100.0 * s.exactFraction);
     const float fraction = s.passCount > 0 ? float(s.passesDone) / float(s.passCount) : 0.0f;
+    const std::string barText =
+        display.paused() ? std::string("paused, ") + overlayText : std::string(overlayText);
     ImGui::ProgressBar(s.finished ? 1.0f : std::max(fraction, float(s.exactFraction) * 0.999f),
-                       ImVec2(-1, 0), overlayText);
+                       ImVec2(-1, 0), barText.c_str());
     const std::uint64_t rays =
         s.counters.primaryRays + s.counters.shadowRays + s.counters.reflectionRays;
     const double seconds = s.elapsedMs / 1000.0;

@@ -19,6 +19,7 @@
 #include "viewer/model/projection.h"
 #include "viewer/model/ray_tree.h"
 #include "viewer/model/reference_lookup.h"
+#include "viewer/model/render_progress.h"
 #include "viewer/model/render_scene.h"
 #include "viewer/model/scene_catalog.h"
 #include "viewer/model/scene_writer.h"
@@ -383,6 +384,26 @@ TEST(CameraControl, APastedCameraLineReadsAsTheSceneReaderReadsIt) {
        {"", "camera 0 0 5 0 0 0 0 1 0 45 320", "sphere 0 0 0 1",
         "camera 0 0 5 0 0 0 0 1 0 45 320 200 7", "camera 0 0 5 0 0 5 0 1 0 45 8 6"})
     EXPECT_THROW(parseCameraLine(bad), std::exception) << bad;
+}
+
+TEST(RenderProgress, TheTimeLeftFollowsThePaceOfTheAntiAliasingPasses) {
+  ProgressiveStatus s;
+  s.passCount = 8;
+  s.passesDone = 4;
+  s.passMs = {10, 20, 30, -1, -1, -1, -1, -1};
+  s.exactMs = 30;
+  EXPECT_FALSE(aaTimeLeftMs(s)) << "before the exact image";
+  s.exactDone = true;
+  EXPECT_FALSE(aaTimeLeftMs(s)) << "no pass after the exact image yet";
+  s.passMs[3] = 130;  // one AA pass of 100 ms, four to go
+  ASSERT_TRUE(aaTimeLeftMs(s));
+  EXPECT_DOUBLE_EQ(*aaTimeLeftMs(s), 400.0);
+  s.passesDone = 6;
+  s.passMs[4] = 230;
+  s.passMs[5] = 430;  // three passes in 400 ms, two to go
+  EXPECT_DOUBLE_EQ(*aaTimeLeftMs(s), 2 * 400.0 / 3);
+  s.finished = true;
+  EXPECT_FALSE(aaTimeLeftMs(s));
 }
 
 TEST(ReferenceLookup, FindsExpectedResultsBesideTheSceneFolders) {

@@ -60,6 +60,9 @@ TEST(Shortcuts, EveryCommandHasAnEntryAndEveryEntryAnAction) {
   run(Command::FewerSamples);
   EXPECT_EQ(state.extraSamples, 1);
   EXPECT_TRUE(state.quitRequested) << "Quit ran in the loop above";
+  EXPECT_TRUE(app.display().paused()) << "and Pause";
+  run(Command::PauseResume);
+  EXPECT_FALSE(app.display().paused());
 }
 
 }  // namespace
