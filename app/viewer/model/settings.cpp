@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include "meshtrace/io/output_file.h"
 
@@ -18,19 +19,60 @@ fs::path settingsFile() {
   return {};
 }
 
+namespace {
+// "NAME WIDTH SHOWN" into `panel`, if the line is one.
+void readPanel(const std::string& line, const std::string& name, SidePanel& panel) {
+  std::istringstream in(line);
+  std::string word;
+  float width = 0;
+  int shown = 1;
+  if (in >> word && word == name && in >> width >> shown && width >= 0) {
+    panel.width = width;
+    panel.shown = shown != 0;
+  }
+}
+}  // namespace
+
 ViewerSettings loadSettings(const fs::path& file) {
   ViewerSettings s;
   std::ifstream in(file);
   const std::string recent = "recent ";
-  for (std::string line; std::getline(in, line);)
+  for (std::string line; std::getline(in, line);) {
     if (line.rfind(recent, 0) == 0 && s.recent.size() < ViewerSettings::kMaxRecent)
       s.recent.emplace_back(line.substr(recent.size()));
+    readPanel(line, "left-panel", s.left);
+    readPanel(line, "right-panel", s.right);
+  }
   return s;
+}
+
+PanelWidths panelWidths(float width, const ViewerSettings& s) {
+  const auto chosen = [&](const SidePanel& p, float share, float lo, float hi) {
+    if (!p.shown) return 0.0f;
+    const float w = p.width > 0 ? p.width : std::clamp(share * width, lo, hi);
+    return std::max(kMinPanel, w);
+  };
+  float left = chosen(s.left, 0.22f, 230.0f, 320.0f);
+  float right = chosen(s.right, 0.32f, 330.0f, 440.0f);
+  // The panels give up room in proportion until the image has 40%.
+  const float room = 0.6f * width;
+  if (left + right > room) {
+    const float scale = room / (left + right);
+    left *= scale;
+    right *= scale;
+  }
+  return {left, right};
 }
 
 void saveSettings(const ViewerSettings& settings, const fs::path& file) {
   std::string text;
   for (const fs::path& p : settings.recent) text += "recent " + p.string() + "\n";
+  const auto panel = [&](const char* name, const SidePanel& p) {
+    text += std::string(name) + " " + std::to_string(static_cast<int>(p.width)) + " " +
+            (p.shown ? "1" : "0") + "\n";
+  };
+  panel("left-panel", settings.left);
+  panel("right-panel", settings.right);
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
   writeFileAtomically(file, text);

@@ -1,17 +1,36 @@
 #pragma once
-// What the viewer remembers between runs: the scenes opened last. Kept in
-// $XDG_CONFIG_HOME/meshtrace/viewer.txt (~/.config when it is unset), one
-// "recent PATH" line each, newest first; lines it does not know are skipped,
-// so an older viewer reads a newer file.
+// What the viewer remembers between runs: the scenes opened last and the
+// side panels' widths and whether they are shown. Kept in
+// $XDG_CONFIG_HOME/meshtrace/viewer.txt (~/.config when it is unset), a
+// "recent PATH" line per scene, newest first, and "left-panel WIDTH SHOWN",
+// "right-panel WIDTH SHOWN"; lines it does not know are skipped, so an
+// older viewer reads a newer file.
 #include <filesystem>
 #include <vector>
 
 namespace meshtrace::viewer {
 
+struct SidePanel {
+  float width = 0.0f;  // window pixels; 0: the default for the window's width
+  bool shown = true;
+  bool operator==(const SidePanel&) const = default;
+};
+
 struct ViewerSettings {
   std::vector<std::filesystem::path> recent;  // newest first, at most kMaxRecent
   static constexpr std::size_t kMaxRecent = 10;
+  SidePanel left, right;
 };
+
+// The side panels' widths in a window `width` pixels wide: the widths
+// chosen, or defaults (about a fifth and a third), 0 for a hidden one; each
+// at least kMinPanel, and together leaving the image at least 40% of the
+// window, so that it stays the largest thing on screen.
+struct PanelWidths {
+  float left, right;
+};
+inline constexpr float kMinPanel = 160.0f;
+PanelWidths panelWidths(float width, const ViewerSettings& settings);
 
 // The settings file's path; empty when neither $XDG_CONFIG_HOME nor $HOME is set.
 std::filesystem::path settingsFile();

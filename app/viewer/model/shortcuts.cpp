@@ -28,6 +28,8 @@ std::vector<Shortcut> makeTable() {
       {"View", "Zoom in", Command::ZoomIn, {{"="}}},
       {"View", "Zoom out", Command::ZoomOut, {{"-"}}},
       {"View", "Unpin the pixel", Command::Unpin, {{"Esc"}}},
+      {"View", "Show or hide the scene list", Command::ToggleScenePanel, {{"F2"}}},
+      {"View", "Show or hide the details", Command::ToggleDetailsPanel, {{"F3"}}},
       {"Render", "Pause or resume the render", Command::PauseResume, {{"Space"}}},
       {"Render", "Restart the render", Command::Restart, {{"R"}}},
       {"Render", "More AA samples", Command::MoreSamples, {{"A"}}},

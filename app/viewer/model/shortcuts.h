@@ -20,6 +20,8 @@ enum class Command {
   ZoomIn,
   ZoomOut,
   Unpin,
+  ToggleScenePanel,
+  ToggleDetailsPanel,
   Restart,
   PauseResume,
   MoreSamples,

@@ -34,6 +34,11 @@ void showSceneWarnings(ViewerState& state, const std::string& before) {
 void rememberScene(ViewerState& state) {
   if (state.settingsPath.empty()) return;
   addRecent(state.settings, state.session.file());
+  saveSettingsIfKept(state);
+}
+
+void saveSettingsIfKept(ViewerState& state) {
+  if (state.settingsPath.empty()) return;
   try {
     saveSettings(state.settings, state.settingsPath);
   } catch (const std::exception& e) {

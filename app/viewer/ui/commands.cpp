@@ -16,6 +16,8 @@ int keyCode(const std::string& key) {
   if (key == "Space") return GLFW_KEY_SPACE;
   if (key == "Esc") return GLFW_KEY_ESCAPE;
   if (key == "F1") return GLFW_KEY_F1;
+  if (key == "F2") return GLFW_KEY_F2;
+  if (key == "F3") return GLFW_KEY_F3;
   if (key == "F5") return GLFW_KEY_F5;
   if (key == "F12") return GLFW_KEY_F12;
   if (key == "-") return GLFW_KEY_MINUS;
@@ -79,6 +81,14 @@ bool runCommand(ViewerState& state, RenderDisplay& display, const Shortcut& shor
         state.helpOpen = false;
       else
         state.pinned.reset();
+      return true;
+    case Command::ToggleScenePanel:
+      state.settings.left.shown = !state.settings.left.shown;
+      state.settingsChanged = true;
+      return true;
+    case Command::ToggleDetailsPanel:
+      state.settings.right.shown = !state.settings.right.shown;
+      state.settingsChanged = true;
       return true;
     case Command::Restart: display.restart(); return true;
     case Command::PauseResume: display.setPaused(!display.paused()); return true;

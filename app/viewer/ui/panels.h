@@ -25,6 +25,8 @@ void setMessage(ViewerState& state, const std::string& message, bool error);
 // Puts the open scene first among the recent ones and saves the settings
 // (when the app keeps any).
 void rememberScene(ViewerState& state);
+// Writes the settings to state.settingsPath, if the app keeps them.
+void saveSettingsIfKept(ViewerState& state);
 // The message line: `before` (if any) and the scene's warnings, shown as a
 // warning; just `before` when there are none.
 void showSceneWarnings(ViewerState& state, const std::string& before = {});

@@ -4,6 +4,7 @@
 #include <imgui_internal.h>  // the log's buffer
 
 #include <algorithm>
+#include <cmath>
 
 #include "viewer/model/observer.h"
 #include "viewer/ui/message_colors.h"
@@ -15,6 +16,18 @@ namespace {
 constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                          ImGuiWindowFlags_NoCollapse |
                                          ImGuiWindowFlags_NoSavedSettings;
+
+// The side panels: their width is dragged at their inner edge (and kept in
+// the settings); placed each frame below the menu bar.
+constexpr ImGuiWindowFlags kSidePanelFlags = kPanelFlags & ~ImGuiWindowFlags_NoResize;
+
+// A width the user dragged the current window to, kept for the next frames.
+void keepWidth(ViewerState& state, SidePanel& panel, float placed) {
+  const float now = ImGui::GetWindowWidth();
+  if (std::abs(now - placed) < 0.5f) return;
+  panel.width = now;
+  state.settingsChanged = true;
+}
 
 bool wanted(const ViewerOptions& o, const char* panel) {
   for (const std::string& p : o.open)
@@ -320,17 +333,20 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   drawMenuBar(state_, display_);
   const float top = ImGui::GetFrameHeight();
   const ImVec2 size = ImGui::GetIO().DisplaySize;
-  const float leftWidth = std::clamp(0.22f * size.x, 230.0f, 320.0f);
-  const float rightWidth = std::clamp(0.32f * size.x, 330.0f, 440.0f);
-  placeWindow(0, leftWidth, top);
-  ImGui::Begin("Scenes", nullptr, kPanelFlags);
-  beginCapture();
-  drawScenePanel(state_);
-  ImGui::Separator();
-  ImGui::TextUnformatted("Objects");
-  drawObjectsPanel(state_, display_);
-  endCapture();
-  ImGui::End();
+  const PanelWidths widths = panelWidths(size.x, state_.settings);
+  const float leftWidth = widths.left, rightWidth = widths.right;
+  if (leftWidth > 0) {
+    placeWindow(0, leftWidth, top);
+    ImGui::Begin("Scenes", nullptr, kSidePanelFlags);
+    keepWidth(state_, state_.settings.left, leftWidth);
+    beginCapture();
+    drawScenePanel(state_);
+    ImGui::Separator();
+    ImGui::TextUnformatted("Objects");
+    drawObjectsPanel(state_, display_);
+    endCapture();
+    ImGui::End();
+  }
 
   placeWindow(leftWidth, size.x - leftWidth - rightWidth, top);
   const std::string title =
@@ -350,23 +366,31 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   endCapture();
   ImGui::End();
 
-  placeWindow(size.x - rightWidth, rightWidth, top);
-  ImGui::Begin("Details", nullptr, kPanelFlags);
-  beginCapture();
-  const ViewerOptions& o = state_.options;
-  if (section("Render", true)) drawRenderPanel(state_, display_);
-  if (section("Draw over the image", wanted(o, "draw"))) drawDrawPanel(state_, display_);
-  if (section("Inspector", true)) drawInspectorPanel(state_, display_);
-  if (section("A/B", wanted(o, "ab"))) drawAbPanel(state_, display_);
-  if (section("Camera", wanted(o, "camera"))) drawCameraPanel(state_);
-  if (section("Normals vs OpenMesh", wanted(o, "normals"))) drawNormalsPanel(state_, display_);
-  state_.reference.panelOpen = section("Compare with a reference", wanted(o, "compare"));
-  if (state_.reference.panelOpen) drawComparePanel(state_, display_);
-  if (section("Save", wanted(o, "save"))) drawSavePanel(state_, display_);
-  endCapture();
-  ImGui::End();
+  if (rightWidth > 0) {
+    placeWindow(size.x - rightWidth, rightWidth, top);
+    ImGui::Begin("Details", nullptr, kSidePanelFlags);
+    keepWidth(state_, state_.settings.right, rightWidth);
+    beginCapture();
+    const ViewerOptions& o = state_.options;
+    if (section("Render", true)) drawRenderPanel(state_, display_);
+    if (section("Draw over the image", wanted(o, "draw"))) drawDrawPanel(state_, display_);
+    if (section("Inspector", true)) drawInspectorPanel(state_, display_);
+    if (section("A/B", wanted(o, "ab"))) drawAbPanel(state_, display_);
+    if (section("Camera", wanted(o, "camera"))) drawCameraPanel(state_);
+    if (section("Normals vs OpenMesh", wanted(o, "normals"))) drawNormalsPanel(state_, display_);
+    state_.reference.panelOpen = section("Compare with a reference", wanted(o, "compare"));
+    if (state_.reference.panelOpen) drawComparePanel(state_, display_);
+    if (section("Save", wanted(o, "save"))) drawSavePanel(state_, display_);
+    endCapture();
+    ImGui::End();
+  }
   drawOverwriteQuestion(state_, display_);
   drawHelpOverlay(state_);
+  // A panel's new width is written once the drag that set it ends.
+  if (state_.settingsChanged && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    state_.settingsChanged = false;
+    saveSettingsIfKept(state_);
+  }
   // A change made in this frame restarts the render now, not next frame.
   sync();
   state_.timing.frameInputAt.reset();

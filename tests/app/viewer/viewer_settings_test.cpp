@@ -43,6 +43,28 @@ TEST(Settings, LiveUnderXdgConfigHomeAndKeepTheRecentScenesNewestFirst) {
   EXPECT_TRUE(loadSettings(config / "missing.txt").recent.empty());
 }
 
+TEST(Settings, ThePanelsWidthsAndVisibilityRoundTripAndLeaveTheImageTheLargest) {
+  ViewerSettings s;
+  const PanelWidths defaults = panelWidths(1280, s);
+  EXPECT_GT(1280 - defaults.left - defaults.right, std::max(defaults.left, defaults.right))
+      << "at 1280 wide the image is the largest";
+  s.left = {250, false};
+  s.right = {520, true};
+  const fs::path file = test::scratchDir() / "viewer.txt";
+  saveSettings(s, file);
+  const ViewerSettings back = loadSettings(file);
+  EXPECT_EQ(back.left, s.left);
+  EXPECT_EQ(back.right, s.right);
+  EXPECT_EQ(panelWidths(1280, back).left, 0.0f) << "hidden";
+  EXPECT_EQ(panelWidths(1280, back).right, 520.0f);
+  s.left.shown = true;
+  s.right.width = 2000;
+  const PanelWidths squeezed = panelWidths(900, s);
+  EXPECT_FLOAT_EQ(900 - squeezed.left - squeezed.right, 0.4f * 900) << "40% stays the image's";
+  s.right.width = 10;
+  EXPECT_EQ(panelWidths(1280, s).right, kMinPanel);
+}
+
 TEST(Settings, AnAppThatKeepsThemRemembersEachSceneItOpens) {
   const fs::path file = test::scratchDir() / "viewer.txt";
   const fs::path scene = test::sourceDir() / "tests/app/viewer/scenes/viewer_test.sce";
