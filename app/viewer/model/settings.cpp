@@ -31,7 +31,55 @@ void readPanel(const std::string& line, const std::string& name, SidePanel& pane
     panel.shown = shown != 0;
   }
 }
+
+void readBookmark(const std::string& line, std::vector<CameraBookmark>& out) {
+  const std::string key = "bookmark ";
+  if (line.rfind(key, 0) != 0) return;
+  const std::size_t a = line.find('\t', key.size());
+  const std::size_t b = a == std::string::npos ? a : line.find('\t', a + 1);
+  if (b == std::string::npos) return;
+  out.push_back(
+      {line.substr(key.size(), a - key.size()), line.substr(a + 1, b - a - 1), line.substr(b + 1)});
+}
+
+fs::path absoluteOf(const fs::path& p) {
+  std::error_code ec;
+  const fs::path a = fs::absolute(p, ec).lexically_normal();
+  return ec ? p : a;
+}
+
+// Tabs and line breaks would break the line a bookmark is kept in.
+std::string oneField(std::string text) {
+  for (char& c : text)
+    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
+  return text;
+}
 }  // namespace
+
+void setBookmark(ViewerSettings& settings, const fs::path& scene, const std::string& name,
+                 const std::string& cameraLine) {
+  const CameraBookmark b{absoluteOf(scene), oneField(name), oneField(cameraLine)};
+  for (CameraBookmark& existing : settings.bookmarks)
+    if (existing.scene == b.scene && existing.name == b.name) {
+      existing = b;
+      return;
+    }
+  settings.bookmarks.push_back(b);
+}
+
+std::vector<CameraBookmark> bookmarksOf(const ViewerSettings& settings, const fs::path& scene) {
+  std::vector<CameraBookmark> out;
+  const fs::path p = absoluteOf(scene);
+  for (const CameraBookmark& b : settings.bookmarks)
+    if (b.scene == p) out.push_back(b);
+  return out;
+}
+
+void removeBookmark(ViewerSettings& settings, const fs::path& scene, const std::string& name) {
+  const fs::path p = absoluteOf(scene);
+  std::erase_if(settings.bookmarks,
+                [&](const CameraBookmark& b) { return b.scene == p && b.name == name; });
+}
 
 ViewerSettings loadSettings(const fs::path& file) {
   ViewerSettings s;
@@ -40,6 +88,7 @@ ViewerSettings loadSettings(const fs::path& file) {
   for (std::string line; std::getline(in, line);) {
     if (line.rfind(recent, 0) == 0 && s.recent.size() < ViewerSettings::kMaxRecent)
       s.recent.emplace_back(line.substr(recent.size()));
+    readBookmark(line, s.bookmarks);
     readPanel(line, "left-panel", s.left);
     readPanel(line, "right-panel", s.right);
   }
@@ -71,6 +120,8 @@ void saveSettings(const ViewerSettings& settings, const fs::path& file) {
     text += std::string(name) + " " + std::to_string(static_cast<int>(p.width)) + " " +
             (p.shown ? "1" : "0") + "\n";
   };
+  for (const CameraBookmark& b : settings.bookmarks)
+    text += "bookmark " + b.scene.string() + "\t" + b.name + "\t" + b.cameraLine + "\n";
   panel("left-panel", settings.left);
   panel("right-panel", settings.right);
   std::error_code ec;
@@ -79,9 +130,7 @@ void saveSettings(const ViewerSettings& settings, const fs::path& file) {
 }
 
 void addRecent(ViewerSettings& settings, const fs::path& scene) {
-  std::error_code ec;
-  fs::path p = fs::absolute(scene, ec).lexically_normal();
-  if (ec) p = scene;
+  const fs::path p = absoluteOf(scene);
   auto& r = settings.recent;
   r.erase(std::remove(r.begin(), r.end(), p), r.end());
   r.insert(r.begin(), p);

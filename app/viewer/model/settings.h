@@ -6,6 +6,7 @@
 // "right-panel WIDTH SHOWN"; lines it does not know are skipped, so an
 // older viewer reads a newer file.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace meshtrace::viewer {
@@ -16,11 +17,29 @@ struct SidePanel {
   bool operator==(const SidePanel&) const = default;
 };
 
+// A camera saved under a name for one scene ("bookmark SCENE<TAB>NAME<TAB>camera ...").
+struct CameraBookmark {
+  std::filesystem::path scene;
+  std::string name;
+  std::string cameraLine;  // as camera_control.h writes and reads it
+  bool operator==(const CameraBookmark&) const = default;
+};
+
 struct ViewerSettings {
   std::vector<std::filesystem::path> recent;  // newest first, at most kMaxRecent
   static constexpr std::size_t kMaxRecent = 10;
   SidePanel left, right;
+  std::vector<CameraBookmark> bookmarks;  // in the order they were made
 };
+
+// Saves `camera` as `name` for `scene` (absolute), replacing one of that name.
+void setBookmark(ViewerSettings& settings, const std::filesystem::path& scene,
+                 const std::string& name, const std::string& cameraLine);
+// The bookmarks of `scene`, in order.
+std::vector<CameraBookmark> bookmarksOf(const ViewerSettings& settings,
+                                        const std::filesystem::path& scene);
+void removeBookmark(ViewerSettings& settings, const std::filesystem::path& scene,
+                    const std::string& name);
 
 // The side panels' widths in a window `width` pixels wide: the widths
 // chosen, or defaults (about a fifth and a third), 0 for a hidden one; each

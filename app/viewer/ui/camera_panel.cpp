@@ -1,5 +1,6 @@
 // The camera: its .sce line (print, copy), reset, and how the mouse moves it.
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <cmath>
 
@@ -7,6 +8,44 @@
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
+
+namespace {
+// Named cameras for this scene, kept in the settings (settings.h).
+void drawBookmarks(ViewerState& state) {
+  const std::filesystem::path& scene = state.session.file();
+  ImGui::SetNextItemWidth(-90);
+  ImGui::InputTextWithHint("##bookmark", "bookmark name", &state.bookmarkName);
+  ImGui::SameLine();
+  if (ImGui::Button("Bookmark")) {
+    const std::string name =
+        state.bookmarkName.empty()
+            ? "view " + std::to_string(bookmarksOf(state.settings, scene).size() + 1)
+            : state.bookmarkName;
+    setBookmark(state.settings, scene, name, cameraLine(state.session.camera()));
+    saveSettingsIfKept(state);
+    state.bookmarkName.clear();
+  }
+  std::optional<std::string> removed;
+  int id = 0;
+  for (const CameraBookmark& b : bookmarksOf(state.settings, scene)) {
+    ImGui::PushID(id++);
+    if (ImGui::Button(b.name.c_str())) {
+      try {
+        state.session.setCamera(parseCameraLine(b.cameraLine));
+      } catch (const std::exception& e) {
+        setMessage(state, "bookmark '" + b.name + "': " + e.what(), true);
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) removed = b.name;
+    ImGui::PopID();
+  }
+  if (removed) {
+    removeBookmark(state.settings, scene, *removed);
+    saveSettingsIfKept(state);
+  }
+}
+}  // namespace
 
 void drawCameraPanel(ViewerState& state) {
   if (!state.session.loaded()) return;
@@ -27,6 +66,7 @@ void drawCameraPanel(ViewerState& state) {
     camera.fovyDegrees = std::round(fov * 10.0) / 10.0;
     state.session.setCamera(camera);
   }
+  drawBookmarks(state);
   ImGui::TextDisabled("Left drag orbits, right drag pans, Shift + wheel moves closer.");
 }
 

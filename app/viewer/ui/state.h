@@ -194,6 +194,7 @@ struct ViewerState {
   ViewerSettings settings;
   std::filesystem::path settingsPath;
   bool settingsChanged = false;  // and not yet written
+  std::string bookmarkName;      // the camera panel's field
   // The command line's settings that apply to the scene (meshes, pixel,
   // reference) wait for it to load; what they name that it lacks is listed
   // here (a headless run then fails).

@@ -65,6 +65,26 @@ TEST(Settings, ThePanelsWidthsAndVisibilityRoundTripAndLeaveTheImageTheLargest) 
   EXPECT_EQ(panelWidths(1280, s).right, kMinPanel);
 }
 
+TEST(Settings, CameraBookmarksArePerSceneNamedOnceAndKept) {
+  ViewerSettings s;
+  setBookmark(s, "/s/a.sce", "front", "camera 0 0 5 0 0 0 0 1 0 45 8 6");
+  setBookmark(s, "/s/b.sce", "front", "camera 1 0 5 0 0 0 0 1 0 45 8 6");
+  setBookmark(s, "/s/a.sce", "top\tview", "camera 0 5 0 0 0 0 0 0 1 45 8 6");
+  setBookmark(s, "/s/a.sce", "front", "camera 0 0 9 0 0 0 0 1 0 45 8 6");
+  const std::vector<CameraBookmark> a = bookmarksOf(s, "/s/a.sce");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].name, "front");
+  EXPECT_EQ(a[0].cameraLine, "camera 0 0 9 0 0 0 0 1 0 45 8 6") << "the name's camera replaced";
+  EXPECT_EQ(a[1].name, "top view") << "a tab would break the file's line";
+
+  const fs::path file = test::scratchDir() / "viewer.txt";
+  saveSettings(s, file);
+  EXPECT_EQ(loadSettings(file).bookmarks, s.bookmarks);
+  removeBookmark(s, "/s/a.sce", "front");
+  EXPECT_EQ(bookmarksOf(s, "/s/a.sce").size(), 1u);
+  EXPECT_EQ(bookmarksOf(s, "/s/b.sce").size(), 1u) << "another scene's of that name stays";
+}
+
 TEST(Settings, AnAppThatKeepsThemRemembersEachSceneItOpens) {
   const fs::path file = test::scratchDir() / "viewer.txt";
   const fs::path scene = test::sourceDir() / "tests/app/viewer/scenes/viewer_test.sce";
