@@ -396,12 +396,12 @@ TEST(RenderProgress, TheTimeLeftFollowsThePaceOfTheAntiAliasingPasses) {
   EXPECT_FALSE(aaTimeLeftMs(s)) << "before the exact image";
   s.exactDone = true;
   EXPECT_FALSE(aaTimeLeftMs(s)) << "no pass after the exact image yet";
-  s.passMs[3] = 130;  // one AA pass of 100 ms, four to go
+  s.passMs[3] = 130;  // one AA pass, 100 after the exact image; four to go
   ASSERT_TRUE(aaTimeLeftMs(s));
   EXPECT_DOUBLE_EQ(*aaTimeLeftMs(s), 400.0);
   s.passesDone = 6;
   s.passMs[4] = 230;
-  s.passMs[5] = 430;  // three passes in 400 ms, two to go
+  s.passMs[5] = 430;  // three AA passes in 400, two to go
   EXPECT_DOUBLE_EQ(*aaTimeLeftMs(s), 2 * 400.0 / 3);
   s.finished = true;
   EXPECT_FALSE(aaTimeLeftMs(s));
