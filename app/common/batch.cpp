@@ -61,15 +61,17 @@ std::vector<std::filesystem::path> findScenes(const std::filesystem::path& dir,
   return scenes;
 }
 
-std::optional<std::uint64_t> memoryLimit(const std::string& option) {
-  // Before any parallel work, and before the default limit counts the
-  // workers' address space. Never destroyed: its destructor at exit would
-  // start TBB's thread management, which aborts if it cannot make a thread.
+void fitWorkersToAddressSpace() {
+  // Never destroyed: its destructor at exit would start TBB's thread
+  // management, which aborts if it cannot make a thread.
   static const tbb::global_control* threads = nullptr;
   const int workers = workerThreadsTheAddressSpaceAllows();
   if (workers >= 0 && !threads)
     threads = new tbb::global_control(tbb::global_control::max_allowed_parallelism,
                                       static_cast<std::size_t>(workers) + 1);
+}
+
+std::optional<std::uint64_t> memoryLimit(const std::string& option) {
   if (option.empty()) return defaultMemoryLimit();
   try {
     return parseByteSize(option);

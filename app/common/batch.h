@@ -20,10 +20,15 @@ inline constexpr const char* kMaxMemoryHelp =
     "Memory one scene may use, e.g. 4G or 512M; refused beyond it before allocating "
     "(default: 3/4 of physical memory, less under ulimit -v)";
 
+// Under an address-space limit (ulimit -v), caps TBB's worker threads to
+// those whose stacks the limit leaves room for
+// (workerThreadsTheAddressSpaceAllows): a thread TBB cannot create ends
+// the process. Call before any parallel work and before memoryLimit(),
+// whose default counts the workers' address space.
+void fitWorkersToAddressSpace();
+
 // The limit --max-memory gives ("" for defaultMemoryLimit()); prints the
-// error and returns nothing if it is not a size. Under an address-space
-// limit it first caps the worker threads to those the limit leaves room
-// for (workerThreadsTheAddressSpaceAllows).
+// error and returns nothing if it is not a size.
 std::optional<std::uint64_t> memoryLimit(const std::string& option);
 
 // Prints the error of a scene that needs more memory than it may use.

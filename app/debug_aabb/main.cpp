@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   std::string maxMemory;
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
   CLI11_PARSE(cli, argc, argv);
+  app::fitWorkersToAddressSpace();
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
 

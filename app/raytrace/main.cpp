@@ -163,6 +163,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (quiet) app::setProgressShown(false);
+  app::fitWorkersToAddressSpace();
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
   if (!shardOption.empty() && !all) {
