@@ -32,6 +32,14 @@ void readPanel(const std::string& line, const std::string& name, SidePanel& pane
   }
 }
 
+// "NAME HEIGHT" into `height`, if the line is one.
+void readHeight(const std::string& line, const std::string& name, float& height) {
+  std::istringstream in(line);
+  std::string word;
+  float h = 0;
+  if (in >> word && word == name && in >> h && h >= 0) height = h;
+}
+
 void readBookmark(const std::string& line, std::vector<CameraBookmark>& out) {
   const std::string key = "bookmark ";
   if (line.rfind(key, 0) != 0) return;
@@ -91,6 +99,7 @@ ViewerSettings loadSettings(const fs::path& file) {
     readBookmark(line, s.bookmarks);
     readPanel(line, "left-panel", s.left);
     readPanel(line, "right-panel", s.right);
+    readHeight(line, "inspector-height", s.panes.inspector);
   }
   return s;
 }
@@ -124,6 +133,7 @@ void saveSettings(const ViewerSettings& settings, const fs::path& file) {
     text += "bookmark " + b.scene.string() + "\t" + b.name + "\t" + b.cameraLine + "\n";
   panel("left-panel", settings.left);
   panel("right-panel", settings.right);
+  text += "inspector-height " + std::to_string(static_cast<int>(settings.panes.inspector)) + "\n";
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
   writeFileAtomically(file, text);

@@ -1,9 +1,10 @@
 #pragma once
-// What the viewer remembers between runs: the scenes opened last and the
-// side panels' widths and whether they are shown. Kept in
-// $XDG_CONFIG_HOME/meshtrace/viewer.txt (~/.config when it is unset), a
-// "recent PATH" line per scene, newest first, and "left-panel WIDTH SHOWN",
-// "right-panel WIDTH SHOWN"; lines it does not know are skipped, so an
+// What the viewer remembers between runs: the scenes opened last, the side
+// panels' widths and whether they are shown, and the height the inspector's
+// pane was dragged to. Kept in $XDG_CONFIG_HOME/meshtrace/viewer.txt
+// (~/.config when it is unset), a "recent PATH" line per scene, newest
+// first, "left-panel WIDTH SHOWN", "right-panel WIDTH SHOWN"
+// and "inspector-height HEIGHT"; lines it does not know are skipped, so an
 // older viewer reads a newer file.
 #include <filesystem>
 #include <string>
@@ -25,10 +26,18 @@ struct CameraBookmark {
   bool operator==(const CameraBookmark&) const = default;
 };
 
+// The height the inspector's pane was dragged to, in window pixels; 0: not
+// dragged (pane_heights.h).
+struct PaneHeights {
+  float inspector = 0.0f;
+  bool operator==(const PaneHeights&) const = default;
+};
+
 struct ViewerSettings {
   std::vector<std::filesystem::path> recent;  // newest first, at most kMaxRecent
   static constexpr std::size_t kMaxRecent = 10;
   SidePanel left, right;
+  PaneHeights panes;
   std::vector<CameraBookmark> bookmarks;  // in the order they were made
 };
 

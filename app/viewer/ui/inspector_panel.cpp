@@ -1,133 +1,107 @@
 // The pixel inspector: everything inspectPixel records about the hovered
 // pixel (or the pinned one when the mouse is elsewhere), through the main
-// camera.
+// camera, in a scrolling pane of its own height (pane_heights.h) with its
+// long lines broken at spaces. The words come from inspector_report.h; --describe
+// gets them whole.
 #include <imgui.h>
 
-#include "meshtrace/render/inspect.h"
+#include "viewer/model/inspector_report.h"
+#include "viewer/model/line_breaks.h"
+#include "viewer/model/pane_heights.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 
 namespace {
-void vec(const char* label, const Vec3& v) {
-  ImGui::Text("%-14s (%.5f, %.5f, %.5f)", label, v.x, v.y, v.z);
-}
+constexpr const char* kHint = "Hover over the image to inspect a pixel; click to pin it.";
 
-void color(const char* label, const Color& c) {
-  ImGui::Text("%-14s (%.4f, %.4f, %.4f)", label, c.r, c.g, c.b);
-}
-
-void drawSurface(const ViewerState& state, const RenderDisplay& display, const SurfaceRecord& s) {
-  ImGui::Text("hit           %s", describeObject(state, display, s.ref).c_str());
-  if (s.ref.kind == ObjectKind::Mesh) ImGui::Text("triangle      %u", s.ref.triangle);
-  ImGui::Text("t             %.6f", s.t);
-  vec("point", s.point);
-  if (s.ref.kind == ObjectKind::Mesh) {
-    ImGui::Text("barycentrics  a %.5f  b %.5f  g %.5f", s.alpha, s.beta, s.gamma);
-    vec("flat normal", s.geometricNormal);
-    if (s.hasVertexNormals) {
-      for (int k = 0; k < 3; ++k) {
-        char label[24];
-        std::snprintf(label, sizeof label, "vertex n%d", k);
-        vec(label, s.vertexNormals[k]);
-      }
-    }
-    if (s.phong) {
-      vec("interpolated", s.shadingNormal);
-      ImGui::Text("flat vs interpolated: %.4f deg", s.normalAngleDegrees);
-    } else {
-      ImGui::TextDisabled("FLAT: shading uses the flat normal");
-    }
-  } else {
-    vec("normal", s.shadingNormal);
+ImVec4 colorOf(LineTone tone) {
+  switch (tone) {
+    case LineTone::Dim: return ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+    case LineTone::Alert: return ImVec4(1, 0.6f, 0.3f, 1);
+    case LineTone::Plain: break;
   }
+  return ImGui::GetStyle().Colors[ImGuiCol_Text];
 }
 
-void drawLights(const ViewerState& state, const RenderDisplay& display, const BounceRecord& b) {
-  color("ambient", b.ambient);
-  for (const LightRecord& l : b.lights) {
-    ImGui::Text("light %zu  n.l %.3f", l.light, l.nDotL);
-    ImGui::SameLine();
-    if (!l.facing)
-      ImGui::TextDisabled("behind the surface: no shadow ray");
-    else if (l.shadowed && l.blocker)
-      ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "shadowed by %s at t %.4g",
-                         describeObject(state, display, *l.blocker).c_str(), l.blockerT);
-    else if (l.shadowed)
-      ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "shadowed");
-    else
-      ImGui::TextUnformatted("lit");
-    if (l.facing && !l.shadowed) {
-      ImGui::Text("   diffuse (%.4f, %.4f, %.4f)", l.diffuse.r, l.diffuse.g, l.diffuse.b);
-      ImGui::Text("   specular (%.4f, %.4f, %.4f)", l.specular.r, l.specular.g, l.specular.b);
+// `text` from the cursor, which may follow other text on its line (begun
+// at `lineStart`), broken at spaces to the pane's width; the lines after
+// the first indented.
+void drawBroken(const std::string& text, float lineStart, LineTone tone = LineTone::Plain) {
+  const float indent = 2.0f * ImGui::GetFontSize();
+  const float left = ImGui::GetCursorPosX(), right = left + ImGui::GetContentRegionAvail().x;
+  const std::vector<std::string> pieces =
+      breakAtSpaces(text, right - left, right - lineStart - indent,
+                    [](const std::string& s) { return ImGui::CalcTextSize(s.c_str()).x; });
+  ImGui::PushStyleColor(ImGuiCol_Text, colorOf(tone));
+  ImGui::TextUnformatted(pieces[0].c_str());
+  ImGui::Indent(indent);
+  for (std::size_t i = 1; i < pieces.size(); ++i) ImGui::TextUnformatted(pieces[i].c_str());
+  ImGui::Unindent(indent);
+  ImGui::PopStyleColor();
+}
+
+void drawLine(const InspectorLine& line) {
+  const float start = ImGui::GetCursorPosX();
+  if (line.bullet) ImGui::Bullet();
+  if (!line.lead.empty()) {
+    ImGui::TextUnformatted(line.lead.c_str());
+    ImGui::SameLine(0, 0);
+  }
+  drawBroken(line.text, start, line.tone);
+}
+
+void drawReport(ViewerState& state, const InspectorReport& report) {
+  const float start = ImGui::GetCursorPosX();
+  drawBroken(report.pixel, start);
+  const Color c = glm::min(report.color, Color(1.0));
+  ImGui::ColorButton("##colour", ImVec4(float(c.r), float(c.g), float(c.b), 1.0f),
+                     ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+  ImGui::SameLine();
+  drawBroken(report.summary, start);
+  if (state.pinned && ImGui::SmallButton("Unpin")) state.pinned.reset();
+  for (std::size_t i = 0; i < report.bounces.size(); ++i) {
+    const InspectorBounce& b = report.bounces[i];
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::TreeNodeEx(b.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      for (const InspectorLine& line : b.lines) drawLine(line);
+      ImGui::TreePop();
     }
-  }
-}
-
-void drawBounce(const ViewerState& state, const RenderDisplay& display, const BounceRecord& b) {
-  vec("ray origin", b.ray.origin);
-  vec("ray direction", b.ray.direction);
-  if (!b.hit) {
-    ImGui::Text("miss: background");
-  } else {
-    drawSurface(state, display, b.surface);
-    drawLights(state, display, b);
-    color("local", b.local);
-    if (b.reflects)
-      ImGui::Text("mirror %.3f: (1 - m) local + m reflected; carries %.3f of the pixel", b.mirror,
-                  b.weight);
-    else if (b.mirror > 0)
-      ImGui::TextDisabled("mirror %.3f, but the depth limit is reached", b.mirror);
-  }
-  color("returns", b.color);
-  if (b.boxes.empty()) {
-    ImGui::TextDisabled("entered no mesh box");
-  } else {
-    ImGui::Text("mesh boxes entered:");
-    for (const BoxRecord& box : b.boxes)
-      ImGui::BulletText(
-          "%s  t %.4g .. %.4g",
-          describeObject(state, display, PrimitiveRef{ObjectKind::Mesh, box.mesh, 0}).c_str(),
-          box.tEnter, box.tExit);
+    ImGui::PopID();
   }
 }
 }  // namespace
 
-void drawInspectorPanel(ViewerState& state, RenderDisplay& display) {
+void drawInspectorPanel(ViewerState& state, RenderDisplay& display, float keepBelow) {
   // From the observer camera the mouse is over another image: the pinned
   // pixel only.
   const std::optional<PixelRef> pixel =
       state.hover && !state.observer.active ? state.hover : state.pinned;
   const PixelInspection* inspection = pixel ? inspectionOf(state, display, *pixel) : nullptr;
-  if (!inspection) {
-    ImGui::TextDisabled("Hover over the image to inspect a pixel; click to pin it.");
-    return;
-  }
-  const PixelInspection& in = *inspection;
-  const bool pinned = state.pinned && *state.pinned == *pixel;
-  ImGui::Text("pixel (%d, %d)%s  y = 0 is the bottom row", pixel->x, pixel->y,
-              pinned ? " pinned" : "");
-  const Color c = glm::min(in.color, Color(1.0));
-  ImGui::ColorButton("##colour", ImVec4(float(c.r), float(c.g), float(c.b), 1.0f),
-                     ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
-  ImGui::SameLine();
-  ImGui::Text("colour (%.4f, %.4f, %.4f)  rays: %llu shadow, %llu reflection", in.color.r,
-              in.color.g, in.color.b, static_cast<unsigned long long>(in.counters.shadowRays),
-              static_cast<unsigned long long>(in.counters.reflectionRays));
-  if (state.pinned && ImGui::SmallButton("Unpin")) state.pinned.reset();
-  for (const BounceRecord& b : in.bounces) {
-    ImGui::PushID(b.level);
-    char title[96];
-    if (b.level == 0)
-      std::snprintf(title, sizeof title, "primary ray");
+  std::optional<InspectorReport> report;
+  if (inspection)
+    report = inspectorReport(
+        *inspection, pixel->x, pixel->y, state.pinned && *state.pinned == *pixel,
+        [&](const PrimitiveRef& ref) { return describeObject(state, display, ref); });
+
+  // The room is measured from the pane's place in the panel's content, not
+  // on screen: scrolling the panel leaves the pane's height alone.
+  const float splitter = kPaneSplitterHeight + ImGui::GetStyle().ItemSpacing.y;
+  const float room = ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y -
+                     ImGui::GetCursorPosY() - splitter - keepBelow;
+  float& chosen = state.settings.panes.inspector;
+  const float height = paneHeight(chosen, room);
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  drawCapturedAs(state, report ? reportText(*report) : std::string(kHint) + "\n", [&] {
+    ImGui::BeginChild("inspector", ImVec2(0, height), true);
+    if (report)
+      drawReport(state, *report);
     else
-      std::snprintf(title, sizeof title, "reflection %d (weight %.3f)", b.level, b.weight);
-    if (ImGui::TreeNodeEx(title, ImGuiTreeNodeFlags_DefaultOpen)) {
-      drawBounce(state, display, b);
-      ImGui::TreePop();
-    }
-    ImGui::PopID();
-  }
+      drawBroken(kHint, ImGui::GetCursorPosX(), LineTone::Dim);
+    ImGui::EndChild();
+  });
+  state.regions["inspector"] = {top.x, top.y, top.x + ImGui::GetItemRectSize().x, top.y + height};
+  paneSplitter(state, "##inspector-height", height, chosen);
 }
 
 }  // namespace meshtrace::viewer

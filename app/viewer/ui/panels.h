@@ -43,6 +43,22 @@ std::string meshNames(const SceneSession& session);
 std::string describeObject(const ViewerState& state, const RenderDisplay& display,
                            const PrimitiveRef& ref);
 
+// The text a frame shows, kept in state.frameText when state.captureText
+// is set (text_capture.cpp): ImGui's log records what the panels draw
+// between beginCapture and endCapture (End finishes it too).
+// drawCapturedAs runs `draw` with the log paused and records `text` in its
+// place: for a scrolling pane, whose lines ImGui logs out of order (its first
+// line joins the line before the pane).
+void beginCapture(ViewerState& state);
+void endCapture(ViewerState& state);
+void drawCapturedAs(ViewerState& state, const std::string& text, const std::function<void()>& draw);
+
+// A bar under a scrolling pane `shown` pixels high that drags its height
+// into `chosen`, marking the settings changed (pane_splitter.cpp); a double
+// click sets `chosen` to 0: the automatic height (pane_heights.h).
+void paneSplitter(ViewerState& state, const char* id, float shown, float& chosen);
+inline constexpr float kPaneSplitterHeight = 6.0f;
+
 // Saving (saving.cpp): saves the render, the window or the scene to its
 // path, made absolute; a file there is replaced only with Existing::Replace,
 // else the user is asked (drawOverwriteQuestion, once a frame).
@@ -70,17 +86,20 @@ void handleShortcuts(ViewerState& state, RenderDisplay& display);
 void drawMenuBar(ViewerState& state, RenderDisplay& display);
 void drawHelpOverlay(ViewerState& state);
 
-void drawScenePanel(ViewerState& state);                              // scene_panel.cpp
-void drawObjectsPanel(ViewerState& state, RenderDisplay& display);    // objects_panel.cpp
-void drawRenderPanel(ViewerState& state, RenderDisplay& display);     // render_panel.cpp
-void drawImageView(ViewerState& state, RenderDisplay& display);       // image_view.cpp
-void drawInspectorPanel(ViewerState& state, RenderDisplay& display);  // inspector_panel.cpp
-void drawCameraPanel(ViewerState& state);                             // camera_panel.cpp
-void drawNormalsPanel(ViewerState& state, RenderDisplay& display);    // normals_panel.cpp
-void drawComparePanel(ViewerState& state, RenderDisplay& display);    // compare_panel.cpp
-void drawSavePanel(ViewerState& state, RenderDisplay& display);       // save_panel.cpp
-void drawDrawPanel(ViewerState& state, RenderDisplay& display);       // draw_panel.cpp
-void drawAbPanel(ViewerState& state, RenderDisplay& display);         // ab_panel.cpp
+void drawScenePanel(ViewerState& state);                            // scene_panel.cpp
+void drawObjectsPanel(ViewerState& state, RenderDisplay& display);  // objects_panel.cpp
+void drawRenderPanel(ViewerState& state, RenderDisplay& display);   // render_panel.cpp
+void drawImageView(ViewerState& state, RenderDisplay& display);     // image_view.cpp
+// The inspector draws in a scrolling pane that fills the panel but for
+// `keepBelow` pixels (for the sections drawn after it), unless dragged.
+void drawInspectorPanel(ViewerState& state, RenderDisplay& display,
+                        float keepBelow);                           // inspector_panel.cpp
+void drawCameraPanel(ViewerState& state);                           // camera_panel.cpp
+void drawNormalsPanel(ViewerState& state, RenderDisplay& display);  // normals_panel.cpp
+void drawComparePanel(ViewerState& state, RenderDisplay& display);  // compare_panel.cpp
+void drawSavePanel(ViewerState& state, RenderDisplay& display);     // save_panel.cpp
+void drawDrawPanel(ViewerState& state, RenderDisplay& display);     // draw_panel.cpp
+void drawAbPanel(ViewerState& state, RenderDisplay& display);       // ab_panel.cpp
 
 // A/B (ab_panel.cpp): keeps the current colour image as B (false if there
 // is none); compares each finished render with B in the background.

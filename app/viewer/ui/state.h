@@ -201,10 +201,12 @@ struct ViewerState {
   bool sceneOptionsPending = false;
   bool depthCheckPending = false;
   std::vector<std::string> optionErrors;
-  // Where this frame drew its image, plot and legends (x0, y0, x1, y1 in
-  // window pixels), and the text it showed: what --describe writes.
+  // Where this frame drew its image, plot, legends and panes (x0, y0, x1,
+  // y1 in window pixels), and the text it showed, kept when captureText is
+  // set: what --describe writes.
   std::map<std::string, std::array<float, 4>> regions;
   std::string frameText;
+  bool captureText = false;
   // Large objects let go of by an action, for the display's disposer to
   // free off the UI thread (viewer_app.cpp hands them over each frame).
   std::vector<std::shared_ptr<const void>> retired;

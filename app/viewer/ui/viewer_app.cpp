@@ -1,7 +1,6 @@
 #include "viewer/ui/viewer_app.h"
 
 #include <imgui.h>
-#include <imgui_internal.h>  // the log's buffer
 
 #include <algorithm>
 #include <cmath>
@@ -339,12 +338,12 @@ void ViewerApp::frame(Clock::time_point inputAt) {
     placeWindow(0, leftWidth, top);
     ImGui::Begin("Scenes", nullptr, kSidePanelFlags);
     keepWidth(state_, state_.settings.left, leftWidth);
-    beginCapture();
+    beginCapture(state_);
     drawScenePanel(state_);
     ImGui::Separator();
     ImGui::TextUnformatted("Objects");
     drawObjectsPanel(state_, display_);
-    endCapture();
+    endCapture(state_);
     ImGui::End();
   }
 
@@ -354,7 +353,7 @@ void ViewerApp::frame(Clock::time_point inputAt) {
                                      : state_.session.file().filename().string()) +
       "###image";
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar);
-  beginCapture();
+  beginCapture(state_);
   if (!state_.message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, state_.messageIsError     ? kErrorColor
                                          : state_.messageIsWarning ? kWarningColor
@@ -363,25 +362,29 @@ void ViewerApp::frame(Clock::time_point inputAt) {
     ImGui::PopStyleColor();
   }
   drawImageView(state_, display_);
-  endCapture();
+  endCapture(state_);
   ImGui::End();
 
   if (rightWidth > 0) {
     placeWindow(size.x - rightWidth, rightWidth, top);
     ImGui::Begin("Details", nullptr, kSidePanelFlags);
     keepWidth(state_, state_.settings.right, rightWidth);
-    beginCapture();
+    beginCapture(state_);
     const ViewerOptions& o = state_.options;
     if (section("Render", true)) drawRenderPanel(state_, display_);
     if (section("Draw over the image", wanted(o, "draw"))) drawDrawPanel(state_, display_);
-    if (section("Inspector", true)) drawInspectorPanel(state_, display_);
+    // The inspector's pane fills the panel down to what the sections after
+    // it drew last frame.
+    if (section("Inspector", true)) drawInspectorPanel(state_, display_, belowInspector_);
+    const float afterInspector = ImGui::GetCursorPosY();
     if (section("A/B", wanted(o, "ab"))) drawAbPanel(state_, display_);
     if (section("Camera", wanted(o, "camera"))) drawCameraPanel(state_);
     if (section("Normals vs OpenMesh", wanted(o, "normals"))) drawNormalsPanel(state_, display_);
     state_.reference.panelOpen = section("Compare with a reference", wanted(o, "compare"));
     if (state_.reference.panelOpen) drawComparePanel(state_, display_);
     if (section("Save", wanted(o, "save"))) drawSavePanel(state_, display_);
-    endCapture();
+    belowInspector_ = ImGui::GetCursorPosY() - afterInspector;
+    endCapture(state_);
     ImGui::End();
   }
   drawOverwriteQuestion(state_, display_);
@@ -394,20 +397,6 @@ void ViewerApp::frame(Clock::time_point inputAt) {
   // A change made in this frame restarts the render now, not next frame.
   sync();
   state_.timing.frameInputAt.reset();
-}
-
-// ImGui's log records the text of every widget drawn in the window until
-// LogFinish (End would finish it too); depth 0 opens no closed tree node.
-// To the clipboard: Debian's 1.86 records nothing logging to its buffer.
-void ViewerApp::beginCapture() {
-  if (captureText_) ImGui::LogToClipboard(0);
-}
-
-void ViewerApp::endCapture() {
-  if (!captureText_) return;
-  state_.frameText += GImGui->LogBuffer.c_str();
-  state_.frameText += '\n';
-  ImGui::LogFinish();
 }
 
 bool ViewerApp::waitingForFirstImage() const {

@@ -65,7 +65,7 @@ class ViewerApp {
   double waitBeforeNextFrameMs(Clock::time_point lastFrameInput) const;
   std::string takeScreenshotRequest();
   // Keep the text each frame shows in state().frameText (for --describe).
-  void captureText(bool on) { captureText_ = on; }
+  void captureText(bool on) { state_.captureText = on; }
   void printStats() const;
 
   // Reads the settings from `file` and writes them back there as they
@@ -100,8 +100,6 @@ class ViewerApp {
   void requestRenderScene();
   void runBackgroundWork();
   void sync();
-  void beginCapture();
-  void endCapture();
   // The current render started less than kOpeningWaitMs (a scene opened)
   // or kRestartWaitMs ago and its first image is not in the texture yet.
   bool waitingForFirstImage() const;
@@ -112,8 +110,10 @@ class ViewerApp {
   int framesSinceInput_ = 0;
   enum class AbStage { None, RenderingB, Done };
   AbStage abStage_ = AbStage::None;
-  bool captureText_ = false;
   bool renderingAtFrameStart_ = false;
+  // The height of the Details panel's sections after the inspector, last
+  // frame: the inspector's pane leaves them that room.
+  float belowInspector_ = 0.0f;
   // Until when a frame waits for the current render's first image.
   std::optional<Clock::time_point> firstImageDeadline_;
 };

@@ -50,11 +50,13 @@ TEST(Settings, ThePanelsWidthsAndVisibilityRoundTripAndLeaveTheImageTheLargest) 
       << "at 1280 wide the image is the largest";
   s.left = {250, false};
   s.right = {520, true};
+  s.panes.inspector = 210;
   const fs::path file = test::scratchDir() / "viewer.txt";
   saveSettings(s, file);
   const ViewerSettings back = loadSettings(file);
   EXPECT_EQ(back.left, s.left);
   EXPECT_EQ(back.right, s.right);
+  EXPECT_EQ(back.panes, s.panes);
   EXPECT_EQ(panelWidths(1280, back).left, 0.0f) << "hidden";
   EXPECT_EQ(panelWidths(1280, back).right, 520.0f);
   s.left.shown = true;

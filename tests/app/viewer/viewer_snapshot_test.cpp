@@ -23,6 +23,7 @@
 #include "meshtrace/report/image_compare.h"
 #include "support/files.h"
 #include "support/paths.h"
+#include "viewer/model/inspector_report.h"
 
 namespace meshtrace {
 namespace {
@@ -51,14 +52,15 @@ struct Shot {
 // Runs the headless viewer on a scene of tests/app/viewer/scenes (or a path
 // relative to the source folder) and reads back what it wrote.
 Shot snapshot(const std::string& name, const std::string& args,
-              const std::string& scene = "tests/app/viewer/scenes/viewer_test.sce") {
+              const std::string& scene = "tests/app/viewer/scenes/viewer_test.sce",
+              const std::string& size = "1100x700") {
   const fs::path dir = test::scratchDir();
   const fs::path png = dir / (name + ".png"), description = dir / (name + ".txt");
   // Relative paths, run from the source folder: the window shows no machine paths.
   const std::string command =
-      "cd '" + test::sourceDir().string() + "' && '" MESHTRACE_VIEWER "'" +
-      " --headless --size 1100x700 --no-default-dirs --hide-timings --threads 2 " + args +
-      " --snapshot '" + png.string() + "' --describe '" + description.string() + "' " + scene;
+      "cd '" + test::sourceDir().string() + "' && '" MESHTRACE_VIEWER "'" + " --headless --size " +
+      size + " --no-default-dirs --hide-timings --threads 2 " + args + " --snapshot '" +
+      png.string() + "' --describe '" + description.string() + "' " + scene;
   Shot shot;
   const int status = std::system(command.c_str());
   shot.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -315,6 +317,60 @@ TEST(ViewerContent, TheObserverShowsTheMainCamerasFrustum) {
   };
   EXPECT_LT(countPixels(main.image, image, frustum), 20);
   EXPECT_GT(countPixels(observer.image, image, frustum), 100);
+}
+
+// The text between `first` and the next panel header ("### A/B ###"), a
+// line each.
+std::vector<std::string> linesFrom(const std::string& text, const std::string& first) {
+  std::vector<std::string> lines;
+  std::istringstream in(text.substr(std::min(text.find(first), text.size())));
+  for (std::string line; std::getline(in, line) && line.rfind("###", 0) != 0;)
+    lines.push_back(line);
+  return lines;
+}
+
+TEST(ViewerContent, TheInspectorsPaneKeepsItsPlaceWhateverThePixelShows) {
+  // (150, 70): the mirror box, a reflection and a shadowed light; (20, 10):
+  // the floor, one ray.
+  const Shot mirror = snapshot("inspector_mirror", "--pin 150,70");
+  const Shot floor = snapshot("inspector_floor", "--pin 20,10");
+  ASSERT_EQ(mirror.exitCode, 0);
+  ASSERT_EQ(floor.exitCode, 0);
+  ASSERT_TRUE(mirror.regions.count("inspector")) << "the inspector has a pane of its own";
+  const Region a = mirror.regions.at("inspector"), b = floor.regions.at("inspector");
+  const std::size_t linesA = linesFrom(mirror.text, "pixel (150, 70)").size(),
+                    linesB = linesFrom(floor.text, "pixel (20, 10)").size();
+  ASSERT_GT(linesA, linesB + 10) << "the two pixels' accounts differ in length";
+  EXPECT_EQ(a.y0, b.y0);
+  EXPECT_EQ(a.y1, b.y1) << "what lies below the pane stays put";
+  EXPECT_GT(a.y1 - a.y0, 150) << "the pane fills the panel's room";
+  // Below the pane: its splitter and the five closed headers, in the window.
+  EXPECT_LE(a.y1 + 10 + 5 * 23, mirror.image.height);
+}
+
+TEST(ViewerContent, DescribeHasEveryInspectorLineWhenThePaneScrolls) {
+  // At 900x600 the pane shows a few of the pixel's lines; --describe has
+  // them all, each on its own line, as the inspector words them.
+  const Shot small = snapshot("inspector_small", "--pin 150,70",
+                              "tests/app/viewer/scenes/viewer_test.sce", "900x600");
+  ASSERT_EQ(small.exitCode, 0);
+  const Region pane = small.regions.at("inspector");
+  ASSERT_LT(pane.y1 - pane.y0, 20 * 17) << "the pane is too small for every line";
+  const Scene scene = testScene();
+  const SceneIntersector intersector(scene, TraceOptions{});
+  const PixelInspection in = inspectPixel(intersector, Camera(scene.camera), 150, 70);
+  const viewer::InspectorReport report = viewer::inspectorReport(
+      in, 150, 70, true, [](const PrimitiveRef&) { return std::string("object"); });
+  std::vector<std::string> expected;
+  std::istringstream words(viewer::reportText(report));
+  for (std::string line; std::getline(words, line);) expected.push_back(line);
+  ASSERT_GT(expected.size(), 30u);
+  const std::vector<std::string> shown = linesFrom(small.text, "pixel (150, 70) pinned");
+  ASSERT_EQ(shown.size(), expected.size()) << small.text;
+  EXPECT_EQ(shown.front(), expected.front());
+  EXPECT_EQ(shown.back(), "    entered no mesh box");
+  expectShows(small, {"\n> reflection 1 (weight 0.400)\n",
+                      "\n    light 1  n.l 0.513 shadowed by sphere #0 at t 0.7441\n"});
 }
 
 }  // namespace

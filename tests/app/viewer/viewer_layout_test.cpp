@@ -1,0 +1,88 @@
+// The viewer's layout without a window: the inspector's words as data (what
+// its pane draws and --describe writes), lines broken only at spaces, and
+// the panes' heights.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "meshtrace/io/scene_parser.h"
+#include "meshtrace/render/render.h"
+#include "viewer/model/inspector_report.h"
+#include "viewer/model/line_breaks.h"
+#include "viewer/model/pane_heights.h"
+
+namespace meshtrace::viewer {
+namespace {
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(InspectorReport, GivesEachBounceItsLinesAndWritesThemAllOneALine) {
+  // A mirror faced by the camera, a light behind a sphere: a reflection and
+  // a shadowed light.
+  const Scene scene = parseScene(
+      "camera 0 0 5  0 0 0  0 1 0  45  2 2\ndepth 1\n"
+      "light 0 3 3  1 1 1\nlight 3 0 3  1 1 1\n"
+      "plane 0 0 0  0 0 1  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0.5\n"
+      "sphere 0 1.5 1.5 0.3  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n",
+      "report.sce");
+  const SceneIntersector intersector(scene, TraceOptions{});
+  const PixelInspection in = inspectPixel(intersector, Camera(scene.camera), 1.0, 1.0);
+  const InspectorReport r = inspectorReport(in, 1, 1, true, [](const PrimitiveRef& ref) {
+    return ref.kind == ObjectKind::Sphere ? std::string("the sphere") : std::string("the mirror");
+  });
+  EXPECT_EQ(r.pixel, "pixel (1, 1) pinned  y = 0 is the bottom row");
+  ASSERT_EQ(r.bounces.size(), 2u);
+  EXPECT_EQ(r.bounces[0].title, "primary ray");
+  EXPECT_EQ(r.bounces[1].title, "reflection 1 (weight 0.500)");
+  int shadowed = 0;
+  for (const InspectorLine& line : r.bounces[0].lines)
+    if (line.tone == LineTone::Alert) {
+      ++shadowed;
+      EXPECT_EQ(line.lead.rfind("light 0  n.l", 0), 0u) << line.lead;
+      EXPECT_EQ(line.text.rfind("shadowed by the sphere at t ", 0), 0u) << line.text;
+    }
+  EXPECT_EQ(shadowed, 1);
+
+  const std::vector<std::string> text = linesOf(reportText(r));
+  std::size_t expected = 2;
+  for (const InspectorBounce& b : r.bounces) expected += 1 + b.lines.size();
+  ASSERT_EQ(text.size(), expected) << reportText(r);
+  EXPECT_EQ(text[0], r.pixel);
+  EXPECT_EQ(text[1], r.summary);
+  EXPECT_EQ(text[2], "> primary ray");
+  EXPECT_EQ(text[3 + r.bounces[0].lines.size()], "> reflection 1 (weight 0.500)");
+  EXPECT_EQ(text.back(), "    " + r.bounces[1].lines.back().text);
+}
+
+TEST(LineBreaks, BreakOnlyAtSpacesAndFitTheWidth) {
+  const auto measure = [](const std::string& s) { return 7.0f * s.size(); };
+  const std::string line = "ray direction  (-0.23415, 0.02705, -0.97182)";
+  EXPECT_EQ(breakAtSpaces(line, 1000, 1000, measure), std::vector<std::string>{line});
+  const std::vector<std::string> pieces = breakAtSpaces(line, 7 * 20, 7 * 12, measure);
+  EXPECT_EQ(pieces,
+            (std::vector<std::string>{"ray direction", "(-0.23415,", "0.02705,", "-0.97182)"}));
+  EXPECT_EQ(breakAtSpaces("colour (0.25, 0.34)  rays: 4 shadow", 7 * 22, 7 * 30, measure),
+            (std::vector<std::string>{"colour (0.25, 0.34)", "rays: 4 shadow"}));
+  EXPECT_EQ(breakAtSpaces("   diffuse (0.0908, 0.2270)", 7 * 20, 7 * 20, measure),
+            (std::vector<std::string>{"   diffuse (0.0908,", "0.2270)"}))
+      << "leading spaces are kept";
+  EXPECT_EQ(breakAtSpaces("averyveryverylongword", 7 * 5, 7 * 5, measure),
+            std::vector<std::string>{"averyveryverylongword"});
+  EXPECT_EQ(breakAtSpaces("", 10, 10, measure), std::vector<std::string>{""});
+}
+
+TEST(PaneHeights, TheInspectorFillsItsRoomUnlessDraggedAndNeverVanishes) {
+  EXPECT_EQ(paneHeight(0, 300), 300);
+  EXPECT_EQ(paneHeight(150, 300), 150);
+  EXPECT_EQ(paneHeight(500, 300), 500) << "a dragged height is kept; the panel scrolls";
+  EXPECT_EQ(paneHeight(0, 20), kMinPane);
+  EXPECT_EQ(paneHeight(10, 300), kMinPane);
+}
+
+}  // namespace
+}  // namespace meshtrace::viewer
