@@ -99,6 +99,7 @@ ViewerSettings loadSettings(const fs::path& file) {
     readBookmark(line, s.bookmarks);
     readPanel(line, "left-panel", s.left);
     readPanel(line, "right-panel", s.right);
+    readHeight(line, "scene-list-height", s.panes.sceneList);
     readHeight(line, "inspector-height", s.panes.inspector);
   }
   return s;
@@ -133,6 +134,7 @@ void saveSettings(const ViewerSettings& settings, const fs::path& file) {
     text += "bookmark " + b.scene.string() + "\t" + b.name + "\t" + b.cameraLine + "\n";
   panel("left-panel", settings.left);
   panel("right-panel", settings.right);
+  text += "scene-list-height " + std::to_string(static_cast<int>(settings.panes.sceneList)) + "\n";
   text += "inspector-height " + std::to_string(static_cast<int>(settings.panes.inspector)) + "\n";
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);

@@ -1,11 +1,11 @@
 #pragma once
 // What the viewer remembers between runs: the scenes opened last, the side
-// panels' widths and whether they are shown, and the height the inspector's
-// pane was dragged to. Kept in $XDG_CONFIG_HOME/meshtrace/viewer.txt
+// panels' widths and whether they are shown, and the heights the scene list
+// and the inspector's pane were dragged to. Kept in $XDG_CONFIG_HOME/meshtrace/viewer.txt
 // (~/.config when it is unset), a "recent PATH" line per scene, newest
-// first, "left-panel WIDTH SHOWN", "right-panel WIDTH SHOWN"
-// and "inspector-height HEIGHT"; lines it does not know are skipped, so an
-// older viewer reads a newer file.
+// first, "left-panel WIDTH SHOWN", "right-panel WIDTH SHOWN",
+// "scene-list-height HEIGHT" and "inspector-height HEIGHT"; lines it does
+// not know are skipped, so an older viewer reads a newer file.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,10 +26,10 @@ struct CameraBookmark {
   bool operator==(const CameraBookmark&) const = default;
 };
 
-// The height the inspector's pane was dragged to, in window pixels; 0: not
-// dragged (pane_heights.h).
+// The heights the scene list and the inspector's pane were dragged to, in
+// window pixels; 0: not dragged (pane_heights.h).
 struct PaneHeights {
-  float inspector = 0.0f;
+  float sceneList = 0.0f, inspector = 0.0f;
   bool operator==(const PaneHeights&) const = default;
 };
 

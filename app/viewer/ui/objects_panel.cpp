@@ -6,7 +6,8 @@
 
 namespace meshtrace::viewer {
 
-void drawObjectsPanel(ViewerState& state, RenderDisplay& display) {
+namespace {
+void drawObjects(ViewerState& state, RenderDisplay& display) {
   SceneSession& session = state.session;
   if (!session.loaded()) {
     ImGui::TextDisabled("No scene loaded.");
@@ -57,6 +58,14 @@ void drawObjectsPanel(ViewerState& state, RenderDisplay& display) {
   ImGui::SameLine();
   if (ImGui::Button("Save scene")) save(state, display, SaveKind::Scene, Existing::Refuse);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Hidden meshes are saved as comment lines.");
+}
+}  // namespace
+
+void drawObjectsPanel(ViewerState& state, RenderDisplay& display) {
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  drawObjects(state, display);
+  const float bottom = ImGui::GetItemRectMax().y;
+  state.regions["objects"] = {top.x, top.y, top.x + ImGui::GetContentRegionAvail().x, bottom};
 }
 
 }  // namespace meshtrace::viewer

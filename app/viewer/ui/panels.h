@@ -86,10 +86,12 @@ void handleShortcuts(ViewerState& state, RenderDisplay& display);
 void drawMenuBar(ViewerState& state, RenderDisplay& display);
 void drawHelpOverlay(ViewerState& state);
 
-void drawScenePanel(ViewerState& state);                            // scene_panel.cpp
 void drawObjectsPanel(ViewerState& state, RenderDisplay& display);  // objects_panel.cpp
 void drawRenderPanel(ViewerState& state, RenderDisplay& display);   // render_panel.cpp
 void drawImageView(ViewerState& state, RenderDisplay& display);     // image_view.cpp
+// The scene list scrolls in a pane above `keepBelow` pixels of the panel
+// (for the Objects list), unless dragged (scene_panel.cpp).
+void drawScenePanel(ViewerState& state, float keepBelow);
 // The inspector draws in a scrolling pane that fills the panel but for
 // `keepBelow` pixels (for the sections drawn after it), unless dragged.
 void drawInspectorPanel(ViewerState& state, RenderDisplay& display,

@@ -1,7 +1,11 @@
-// The scene list: folders of scenes, a path field and a folder browser.
+// The scene list: a path field, a folder browser, and the folders of
+// scenes in a pane of bounded height (pane_heights.h).
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+
+#include "viewer/model/pane_heights.h"
 #include "viewer/ui/message_colors.h"
 #include "viewer/ui/panels.h"
 
@@ -29,9 +33,25 @@ void drawFolderBrowser(ViewerState& state) {
   // Moving changes the entries: only after the loop over them.
   if (chosen) browser.enter(*chosen);
 }
+
+void drawFolders(ViewerState& state) {
+  for (SceneFolder& folder : state.folders) {
+    ImGui::PushID(folder.root.string().c_str());
+    const std::string header = folder.title + " (" + std::to_string(folder.scenes.size()) + ")";
+    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      if (!folder.error.empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", folder.error.c_str());
+      for (const auto& scene : folder.scenes) {
+        const bool selected = scene == state.session.file();
+        if (ImGui::Selectable(sceneLabel(folder, scene).c_str(), selected)) openScene(state, scene);
+      }
+    }
+    ImGui::PopID();
+  }
+}
 }  // namespace
 
-void drawScenePanel(ViewerState& state) {
+void drawScenePanel(ViewerState& state, float keepBelow) {
   ImGui::SetNextItemWidth(-60);
   if (state.focusPathField) ImGui::SetKeyboardFocusHere();
   state.focusPathField = false;
@@ -60,19 +80,22 @@ void drawScenePanel(ViewerState& state) {
       ImGui::TextWrapped("warning: %s", w.c_str());
     ImGui::PopStyleColor();
   }
-  for (SceneFolder& folder : state.folders) {
-    ImGui::PushID(folder.root.string().c_str());
-    const std::string header = folder.title + " (" + std::to_string(folder.scenes.size()) + ")";
-    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
-      if (!folder.error.empty())
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", folder.error.c_str());
-      for (const auto& scene : folder.scenes) {
-        const bool selected = scene == state.session.file();
-        if (ImGui::Selectable(sceneLabel(folder, scene).c_str(), selected)) openScene(state, scene);
-      }
-    }
-    ImGui::PopID();
-  }
+  // The folders scroll in a pane of their own: the Objects list below
+  // stays in view however many there are.
+  const float splitter = kPaneSplitterHeight + ImGui::GetStyle().ItemSpacing.y;
+  const float room = ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y -
+                     ImGui::GetCursorPosY() - splitter;
+  float& chosen = state.settings.panes.sceneList;
+  const float height =
+      std::max(1.0f, sceneListHeight(chosen, state.sceneListContent, room, keepBelow));
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  ImGui::BeginChild("scene list", ImVec2(0, height));
+  drawFolders(state);
+  // In the pane's content, wherever it is scrolled to; used next frame.
+  state.sceneListContent = ImGui::GetCursorPosY();
+  ImGui::EndChild();
+  state.regions["scene_list"] = {top.x, top.y, top.x + ImGui::GetItemRectSize().x, top.y + height};
+  paneSplitter(state, "##scene-list-height", height, chosen);
 }
 
 }  // namespace meshtrace::viewer

@@ -64,6 +64,7 @@ struct CrossCheckState {
 struct ReferenceState {
   std::filesystem::path path;  // empty: none
   std::string pathField;
+  float sceneListContent = 0.0f;  // the scene list's height as drawn last frame
   std::string error;
   Image8 image;
   gl::Texture texture, difference;
@@ -158,6 +159,7 @@ struct ViewerState {
   SceneRequests scenes;
   std::vector<SceneFolder> folders;
   std::string pathField;
+  float sceneListContent = 0.0f;         // the scene list's height as drawn last frame
   std::optional<FolderBrowser> browser;  // open while shown
 
   View view = View::Color;

@@ -339,10 +339,12 @@ void ViewerApp::frame(Clock::time_point inputAt) {
     ImGui::Begin("Scenes", nullptr, kSidePanelFlags);
     keepWidth(state_, state_.settings.left, leftWidth);
     beginCapture(state_);
-    drawScenePanel(state_);
+    drawScenePanel(state_, belowSceneList_);
+    const float afterSceneList = ImGui::GetCursorPosY();
     ImGui::Separator();
     ImGui::TextUnformatted("Objects");
     drawObjectsPanel(state_, display_);
+    belowSceneList_ = ImGui::GetCursorPosY() - afterSceneList;
     endCapture(state_);
     ImGui::End();
   }

@@ -114,6 +114,8 @@ class ViewerApp {
   // The height of the Details panel's sections after the inspector, last
   // frame: the inspector's pane leaves them that room.
   float belowInspector_ = 0.0f;
+  // The height of the Objects list below the scene list, last frame.
+  float belowSceneList_ = 0.0f;
   // Until when a frame waits for the current render's first image.
   std::optional<Clock::time_point> firstImageDeadline_;
 };

@@ -84,5 +84,19 @@ TEST(PaneHeights, TheInspectorFillsItsRoomUnlessDraggedAndNeverVanishes) {
   EXPECT_EQ(paneHeight(10, 300), kMinPane);
 }
 
+TEST(PaneHeights, TheSceneListLeavesTheObjectsListItsRoomAndKeepsAShare) {
+  // Short: as long as its content.
+  EXPECT_EQ(sceneListHeight(0, 120, 600, 150), 120);
+  // Long: all but the Objects list's room ...
+  EXPECT_EQ(sceneListHeight(0, 900, 600, 150), 450);
+  // ... but never less than its share, however long the Objects list.
+  EXPECT_EQ(sceneListHeight(0, 900, 600, 500), kSceneListShare * 600);
+  // Dragged: as dragged, leaving the Objects list at least kMinPane.
+  EXPECT_EQ(sceneListHeight(200, 900, 600, 150), 200);
+  EXPECT_EQ(sceneListHeight(800, 900, 600, 150), 600 - kMinPane);
+  EXPECT_EQ(sceneListHeight(0, 900, 100, 150), kMinPane) << "never vanishes";
+  EXPECT_EQ(sceneListHeight(0, 30, 100, 150), 30);
+}
+
 }  // namespace
 }  // namespace meshtrace::viewer

@@ -50,7 +50,7 @@ TEST(Settings, ThePanelsWidthsAndVisibilityRoundTripAndLeaveTheImageTheLargest) 
       << "at 1280 wide the image is the largest";
   s.left = {250, false};
   s.right = {520, true};
-  s.panes.inspector = 210;
+  s.panes = {180, 210};
   const fs::path file = test::scratchDir() / "viewer.txt";
   saveSettings(s, file);
   const ViewerSettings back = loadSettings(file);

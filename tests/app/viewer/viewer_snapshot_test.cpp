@@ -49,12 +49,26 @@ struct Shot {
   std::map<std::string, Region> regions;
 };
 
+// The running test's scratch folder, emptied at its first use in the test
+// only: what a test makes there stays for each of its snapshots.
+fs::path shotDir() {
+  static std::string test;
+  static fs::path dir;
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = std::string(info->test_suite_name()) + "." + info->name();
+  if (name != test) {
+    dir = test::scratchDir();
+    test = name;
+  }
+  return dir;
+}
+
 // Runs the headless viewer on a scene of tests/app/viewer/scenes (or a path
 // relative to the source folder) and reads back what it wrote.
 Shot snapshot(const std::string& name, const std::string& args,
               const std::string& scene = "tests/app/viewer/scenes/viewer_test.sce",
               const std::string& size = "1100x700") {
-  const fs::path dir = test::scratchDir();
+  const fs::path dir = shotDir();
   const fs::path png = dir / (name + ".png"), description = dir / (name + ".txt");
   // Relative paths, run from the source folder: the window shows no machine paths.
   const std::string command =
@@ -185,7 +199,7 @@ Scene testScene() { return loadScene(testScenes() / "viewer_test.sce"); }
 TEST(ViewerContent, TheImageAtOneToOneHoldsThePixelsRaytraceWrites) {
   const Shot shot = snapshot("one_to_one", "--zoom 1");
   ASSERT_EQ(shot.exitCode, 0);
-  const fs::path png = test::scratchDir() / "raytrace.png";
+  const fs::path png = shotDir() / "raytrace.png";
   const std::string command = "'" MESHTRACE_RAYTRACE "' '" +
                               (testScenes() / "viewer_test.sce").string() + "' '" + png.string() +
                               "' > /dev/null";
@@ -327,6 +341,31 @@ std::vector<std::string> linesFrom(const std::string& text, const std::string& f
   for (std::string line; std::getline(in, line) && line.rfind("###", 0) != 0;)
     lines.push_back(line);
   return lines;
+}
+
+TEST(ViewerContent, TheObjectsListStaysInViewWhateverTheSceneFolders) {
+  // Three folders of eight scenes and the scene's own folder: 26 rows, more
+  // than the panel's height at 1280x720 and at 900x600.
+  std::string folders;
+  for (const char* name : {"alpha", "beta", "gamma"}) {
+    const fs::path dir = shotDir() / name;
+    fs::create_directories(dir);
+    for (int i = 0; i < 8; ++i) test::writeFile(dir / ("scene_" + std::to_string(i) + ".sce"), "");
+    folders += " --scenes '" + dir.string() + "'";
+  }
+  for (const char* size : {"1280x720", "900x600"}) {
+    SCOPED_TRACE(size);
+    const Shot shot = snapshot(std::string("folders_") + size, folders,
+                               "tests/app/viewer/scenes/viewer_test.sce", size);
+    ASSERT_EQ(shot.exitCode, 0);
+    expectShows(shot, {"### gamma (8) ###", "scene_7.sce", "Objects", "Save scene"});
+    ASSERT_TRUE(shot.regions.count("objects"));
+    const Region objects = shot.regions.at("objects"), list = shot.regions.at("scene_list");
+    EXPECT_LE(objects.y1, shot.image.height) << "the whole Objects list is in the window";
+    EXPECT_GE(objects.y0, list.y1) << "below the scene list";
+    EXPECT_GE(list.y1 - list.y0, 0.4 * (shot.image.height - list.y0))
+        << "the scene list keeps a fair share";
+  }
 }
 
 TEST(ViewerContent, TheInspectorsPaneKeepsItsPlaceWhateverThePixelShows) {
