@@ -301,9 +301,12 @@ void drawImageView(ViewerState& state, RenderDisplay& display) {
                    IM_COL32(255, 255, 255, int(255 * state.opacity)));
   drawPixelGrid(draw, v, area, w, h);
   // An image position (y up, pixel i traced at i) sits at its pixel's centre.
+  // The findings belong to the image: a ray that leaves it stops at its edge.
+  draw->PushClipRect(p0, p1, true);
   drawFindings(state, display, draw, [&](const ImagePoint& p) {
     return screen(v, p.x + 0.5, flippedRow(0, h) - p.y + 0.5);
   });
+  draw->PopClipRect();
   if (state.observer.active) {
     ImGui::GetWindowDrawList()->AddText(ImVec2(area.x + 6, area.y + 4),
                                         IM_COL32(190, 200, 255, 255), "observer camera");

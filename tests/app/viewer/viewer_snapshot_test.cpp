@@ -320,6 +320,22 @@ TEST(ViewerContent, FindingsAreDrawnOverTheImageOnlyWhenAsked) {
   EXPECT_GT(changedPixels(none, cut, image), 200) << "the cut is drawn";
 }
 
+TEST(ViewerContent, FindingsStopAtTheImagesEdge) {
+  // From (150, 70) the lit shadow rays run up and to the right, out of the
+  // image: their yellow reaches its top edge and no further.
+  const Shot rays = snapshot("findings_clipped", "--pin 150,70 --draw rays");
+  ASSERT_EQ(rays.exitCode, 0);
+  const Region image = rays.regions.at("image");
+  const auto lit = [](int r, int g, int b) { return r > 230 && g > 190 && g < 240 && b < 110; };
+  const int edge = countPixels(rays.image, Region{image.x0, image.y0, image.x1, image.y0 + 3}, lit);
+  ASSERT_GT(edge, 0) << "a shadow ray reaches the image's top edge";
+  // Above the image, the view's empty band (the toolbar ends 40 px lower
+  // than the window's top).
+  const Region above{image.x0, 70, image.x1, image.y0};
+  ASSERT_GT(above.y1 - above.y0, 50);
+  EXPECT_EQ(countPixels(rays.image, above, lit), 0);
+}
+
 TEST(ViewerContent, TheObserverShowsTheMainCamerasFrustum) {
   const Shot main = snapshot("observer_off", "--pin 150,70");
   const Shot observer = snapshot("observer_on", "--pin 150,70 --observer");
