@@ -16,8 +16,11 @@ std::string panelList() {
 }
 }  // namespace
 
+std::string versionLine() { return std::string("meshtrace viewer ") + MESHTRACE_VERSION; }
+
 std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) {
   CLI::App cli{"meshtrace viewer: browse scenes, watch them render, inspect every pixel."};
+  cli.set_version_flag("--version", versionLine());
   ViewerOptions o;
   std::vector<std::string> draw, bShading;
   std::string bTriangle, bPrecision, abMode = "a";

@@ -68,8 +68,12 @@ struct ViewerOptions {
 // The panels --open names.
 inline constexpr const char* kPanels[] = {"camera", "normals", "compare", "save", "draw", "ab"};
 
+// "meshtrace viewer 0.1.0": the project's version (the top-level CMake
+// project()), for --version and Help > About.
+std::string versionLine();
+
 // Parses argv; returns an exit code in `exitCode` when the program should
-// stop (help, or an error already printed).
+// stop (help, --version, or an error already printed).
 std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode);
 
 }  // namespace meshtrace::viewer

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "viewer/model/options.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -181,7 +182,7 @@ void drawHelpOverlay(ViewerState& state) {
     ImGui::SetNextWindowPos(ImVec2(size.x / 2, size.y / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("About", &state.aboutOpen,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-    ImGui::Text("meshtrace viewer %s", MESHTRACE_VIEWER_VERSION);
+    ImGui::TextUnformatted(versionLine().c_str());
     ImGui::TextUnformatted("A ray tracer for triangle meshes: browse scenes, watch them render,");
     ImGui::TextUnformatted("inspect every pixel.");
     ImGui::Text("Dear ImGui %s, GLFW %s", IMGUI_VERSION, glfwGetVersionString());

@@ -4,6 +4,8 @@
 // (an earlier snapshot, say) is left as it was.
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include "support/bad_inputs.h"
 #include "support/cli.h"
 #include "support/files.h"
@@ -150,6 +152,20 @@ TEST(ViewerHeadless, ShowsTheScenesWarningsInTheWindow) {
        at = shown.find("parallel to the view", at + 1))
     ++count;
   EXPECT_EQ(count, 2u) << "in the scene panel and on the message line:\n" << shown;
+}
+
+TEST(ViewerVersion, IsTheProjectsVersionFromTheTopLevelCMakeLists) {
+  // The one place the version is written: project(meshtrace VERSION x.y.z ...).
+  const std::string cmake = test::readFileBytes(test::sourceDir() / "CMakeLists.txt");
+  std::smatch m;
+  ASSERT_TRUE(
+      std::regex_search(cmake, m, std::regex(R"(project\(meshtrace\s+VERSION\s+([0-9.]+))")))
+      << "the top-level project() states the version";
+  const auto dir = test::scratchDir();
+  const test::ToolResult result = test::runTool(viewerTool(), {"--version"}, dir);
+  ASSERT_TRUE(result.exited && result.exitCode == 0) << test::describe(result);
+  // Help > About shows the same line (versionLine()).
+  EXPECT_EQ(result.out, "meshtrace viewer " + m[1].str() + "\n");
 }
 
 }  // namespace
