@@ -54,6 +54,8 @@ struct Throughput {
   double primary[2] = {0, 0};        // ray by ray (Embree: rtcIntersect1)
   double primaryPacket[2] = {0, 0};  // 2x2 quads (Embree: rtcIntersect4)
   double shadow[2] = {0, 0};
+  // Bounces off the primary hits (rays.h), ray by ray on 1 thread.
+  double mirror = 0, hemisphere = 0;
 };
 
 struct EngineFigures {
@@ -117,6 +119,14 @@ auto oursPrimaryPackets(const SceneIntersector& is, const RaySet& primary) {
     }
   };
 }
+// A spawned closest-hit ray (a bounce), leaving its primitive.
+auto oursBounce(const SceneIntersector& is, const RaySet& bounce) {
+  return [&is, &bounce](std::size_t i) {
+    Hit hit;
+    Counters c;
+    is.closestHit(bounce.rays[i], 0.0, hit, c, bounce.startOf(i));
+  };
+}
 auto oursShadow(const SceneIntersector& is, const RaySet& shadow) {
   return [&is, &shadow](std::size_t i) {
     Counters c;
@@ -161,15 +171,36 @@ std::array<double, sizeof...(Trace)> interleavedMrays(std::size_t n, int threads
   return best;
 }
 
+std::vector<RTCRayHit> embreeRays(const RaySet& set) {
+  std::vector<RTCRayHit> out;
+  out.reserve(set.rays.size());
+  for (std::size_t i = 0; i < set.rays.size(); ++i)
+    out.push_back(EmbreeIntersector::prepare(set.rays[i], 0.0, set.tMax[i]));
+  return out;
+}
+
+// Each engine's closest hits, ray by ray (Embree: rtcIntersect1), on one
+// thread: Mrays/s of ours, Embree robust and Embree HQ.
+std::array<double, 3> measureClosestHits(const SceneIntersector& ours,
+                                         const EmbreeIntersector& robust,
+                                         const EmbreeIntersector& hq, const RaySet& set) {
+  const std::vector<RTCRayHit> rays = embreeRays(set);
+  const auto embree = [&rays](const EmbreeIntersector& e) {
+    return [&rays, engine = &e](std::size_t i) {
+      RTCRayHit rh = rays[i];
+      engine->intersect1(rh);
+    };
+  };
+  const std::size_t n = rays.size();
+  return interleavedMrays(n, 1, Tracer{n, oursBounce(ours, set)}, Tracer{n, embree(robust)},
+                          Tracer{n, embree(hq)});
+}
+
 // Our BVH and both Embree builds on the same rays, side by side.
 void measureSideBySide(const SceneIntersector& ours, const EmbreeIntersector& robust,
                        const EmbreeIntersector& hq, const RaySet& primary, const RaySet& shadow,
                        int threads, SceneFigures& f) {
-  std::vector<RTCRayHit> p, s;
-  for (std::size_t i = 0; i < primary.rays.size(); ++i)
-    p.push_back(EmbreeIntersector::prepare(primary.rays[i], 0.0, primary.tMax[i]));
-  for (std::size_t i = 0; i < shadow.rays.size(); ++i)
-    s.push_back(EmbreeIntersector::prepare(shadow.rays[i], 0.0, shadow.tMax[i]));
+  const std::vector<RTCRayHit> p = embreeRays(primary), s = embreeRays(shadow);
   const auto embreePrimary = [&p](const EmbreeIntersector& e) {
     return [&p, engine = &e](std::size_t i) {
       RTCRayHit rh = p[i];
@@ -282,6 +313,14 @@ std::optional<SceneFigures> measure(const std::filesystem::path& file,
   const RaySet primary = primaryRays(scene);
   const RaySet shadow = shadowRays(scene, ours, primary);
   measureSideBySide(ours, embree, embreeHq, primary, shadow, threads, f);
+  for (const Bounce b : {Bounce::Mirror, Bounce::Hemisphere}) {
+    const auto mr = measureClosestHits(ours, embree, embreeHq, bounceRays(scene, ours, primary, b));
+    double Throughput::*figure =
+        b == Bounce::Mirror ? &Throughput::mirror : &Throughput::hemisphere;
+    f.ours.rays.*figure = mr[0];
+    f.embree.rays.*figure = mr[1];
+    f.embreeHq.rays.*figure = mr[2];
+  }
   f.ours.measured = f.embree.measured = f.embreeHq.measured = true;
 
   if (slow) {
@@ -382,6 +421,13 @@ void printScene(const SceneFigures& f, int threads) {
       "shadow Mrays/s, 1 thread", [&](const E& e) { return mr(e, e.rays.shadow[0]); }, "%.3g");
   row(("shadow Mrays/s, " + all).c_str(), [&](const E& e) { return mr(e, e.rays.shadow[1]); },
       "%.3g");
+  const auto bounce = [](double v) { return v > 0 ? O(v) : O(); };
+  row(
+      "mirror bounce Mrays/s, 1 thread, ray by ray",
+      [&](const E& e) { return bounce(e.rays.mirror); }, "%.3g");
+  row(
+      "hemisphere bounce Mrays/s, 1 thread, ray by ray",
+      [&](const E& e) { return bounce(e.rays.hemisphere); }, "%.3g");
   row(
       "full run ms (load, build, render, write)", [](const E& e) { return e.renderMs; }, "%.0f");
   if (f.verifiedRays)
@@ -420,6 +466,17 @@ void printSummary(const std::vector<SceneFigures>& all) {
         cell(f.fullRunPairedRatio, "%.2f×").c_str(),
         ratio(o.rays.primaryPacket[0], f.embreeHq.rays.primary[0]).c_str(),
         f.aabb.measured ? ratio(o.rays.primary[0], f.aabb.rays.primary[0]).c_str() : "–");
+  }
+  std::printf(
+      "\nBounces off the primary hits, ray by ray on 1 thread (ours against rtcIntersect1): "
+      "the mirror direction, and a direction uniform over the hemisphere.\n\n"
+      "| scene | mirror / robust | mirror / HQ | hemisphere / robust | hemisphere / HQ |\n"
+      "|---|---:|---:|---:|---:|\n");
+  for (const SceneFigures& f : all) {
+    const Throughput &o = f.ours.rays, &e = f.embree.rays, &hq = f.embreeHq.rays;
+    std::printf("| %s | %s | %s | %s | %s |\n", f.name.c_str(), ratio(o.mirror, e.mirror).c_str(),
+                ratio(o.mirror, hq.mirror).c_str(), ratio(o.hemisphere, e.hemisphere).c_str(),
+                ratio(o.hemisphere, hq.hemisphere).c_str());
   }
 }
 

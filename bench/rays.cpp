@@ -1,5 +1,9 @@
 #include "bench/rays.h"
 
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <random>
+
 #include "meshtrace/render/spawn.h"
 #include "meshtrace/render/surface.h"
 
@@ -25,6 +29,34 @@ RaySet primaryRays(const Scene& scene) {
     for (int y = 0; y < h - h % 2; ++y) add(w - 1, y);
   if (h % 2)
     for (int x = 0; x < w; ++x) add(x, h - 1);
+  return set;
+}
+
+RaySet bounceRays(const Scene& scene, const SceneIntersector& intersector, const RaySet& primary,
+                  Bounce bounce) {
+  RaySet set;
+  std::mt19937_64 random(20261125);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Counters c;
+  for (const Ray& ray : primary.rays) {
+    Hit hit;
+    if (!intersector.closestHit(ray, kSpawnTMin, hit, c)) continue;
+    const SurfacePoint sp = surfaceAt(scene, ray, hit, intersector.options().triangle.precision);
+    Vec3 d;
+    if (bounce == Bounce::Mirror) {
+      d = glm::reflect(ray.direction, sp.normal);
+    } else {
+      // Uniform on the sphere (z uniform in [-1, 1], an angle around z),
+      // turned into the normal's hemisphere.
+      const double z = 2.0 * unit(random) - 1.0, phi = 2.0 * glm::pi<double>() * unit(random);
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      d = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+      if (glm::dot(d, sp.normal) < 0.0) d = -d;
+    }
+    set.rays.push_back({spawnOrigin(sp, d), d});
+    set.tMax.push_back(kInfinity);
+    set.start.push_back(sp.primitive);
+  }
   return set;
 }
 

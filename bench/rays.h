@@ -34,6 +34,14 @@ RaySet primaryRays(const Scene& scene);
 // From each primary hit whose normal faces the first light, the shadow ray
 // the integrator would cast toward it (found with `intersector`).
 RaySet shadowRays(const Scene& scene, const SceneIntersector& intersector, const RaySet& primary);
+// From each primary hit, the ray a bounce off it would cast, spawned as the
+// integrator spawns reflections: its mirror direction (coherent where the
+// surface is flat, spread where it is curved), or a direction drawn
+// uniformly over the hemisphere around the normal (incoherent: what a path
+// tracer's diffuse bounce casts), from a fixed seed.
+enum class Bounce { Mirror, Hemisphere };
+RaySet bounceRays(const Scene& scene, const SceneIntersector& intersector, const RaySet& primary,
+                  Bounce bounce);
 
 // Seconds for trace(i) over every stride-th i < n, on `threads` threads,
 // best of up to `passes` passes (stopping once a second has been spent).

@@ -51,6 +51,8 @@ for m in "${meshes[@]}" knot1m; do
   [ -f "${off%.off}.sce" ] || "$bench" --make-scene "$off"
   scenes+=("${off%.off}.sce")
 done
+# Our interiors: long, thin triangles spanning the scene (see scenes/).
+scenes+=(scenes/hall/hall.sce scenes/sponge/sponge.sce)
 if [ -d "$seed" ]; then
   for s in cube mask rings toon_faces; do scenes=("$seed/$s/$s.sce" "${scenes[@]}"); done
 else

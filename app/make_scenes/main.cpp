@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
          reverseWinding(room);  // seen from inside
          return room;
        }},
+      {"hall/hall.off", [] { return makeHall(40.0, 16.0, 8.0); }},
+      {"sponge/sponge.off", [] { return makeMengerSponge(Vec3(0.0, 1.0, 0.0), 2.0, 2); }},
       {"grid_room/torus.off", [] { return makeTorus(Vec3(0.8, 1.0, -0.6), 0.9, 0.3, 48, 24); }},
   };
   try {

@@ -27,6 +27,25 @@ MeshData makeGrid(const Vec3& center, double size, int n);
 // facing outward: 12 * n * n triangles.
 MeshData makeGriddedBox(const Vec3& min, const Vec3& max, int n);
 
+// Interiors: scenes of large, long and thin triangles spanning the scene
+// beside small parts, where a BVH over whole triangles is weakest
+// (architecture_generators.cpp). Both are unions of boxes (12 triangles
+// each, with corners of their own), axis-aligned and facing outward.
+
+// A hall of `length` along z, `width` along x and `height`, its floor at
+// y = 0 centred on the origin: a floor of stripes running its length, walls
+// with window openings crossed by bars, a ceiling carried by beams across
+// the width, two rows of columns and a flight of stairs at the far end.
+MeshData makeHall(double length, double width, double height);
+
+// A Menger sponge of `level` (0 is the cube) filling the cube of side
+// `size` at `center`: 20^level cubes, touching face to face, so that
+// neighbours' faces are coplanar.
+MeshData makeMengerSponge(const Vec3& center, double size, int level);
+
+// Adds `part`'s vertices and triangles to `mesh`.
+void appendMesh(MeshData& mesh, const MeshData& part);
+
 // Turns every triangle to face the other way (e.g. a box seen from inside).
 void reverseWinding(MeshData& mesh);
 
