@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/ply_reader.h"
 
 namespace meshtrace::formats {
 
@@ -220,8 +222,15 @@ void silenceOpenMesh() {
 void registerOpenMeshFormats() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const char* extension : {".ply", ".obj", ".stl", ".om"})
+    for (const char* extension : {".obj", ".stl", ".om"})
       registerMeshReader(extension, readOpenMeshFile);
+    // Binary PLY is read by the core's reader, streamed (and quicker than
+    // OpenMesh's generic properties); what it leaves, ASCII PLY above all,
+    // comes here.
+    registerMeshReader(".ply", [](const std::filesystem::path& file, MemoryBudget& budget) {
+      if (std::optional<MeshData> mesh = readBinaryPly(file, budget)) return std::move(*mesh);
+      return readOpenMeshFile(file, budget);
+    });
   });
 }
 
