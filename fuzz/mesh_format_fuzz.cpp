@@ -1,6 +1,8 @@
-// Fuzzes one of the formats read through OpenMesh (the file checks, then
-// OpenMesh's reader and our importer): any input must either load or throw
-// InputError. Built once per format, MESHTRACE_FUZZ_EXTENSION naming it
+// Fuzzes one of the formats the tools read besides OFF, through the readers
+// registered for its extension (for PLY, the core's binary PLY reader, then
+// for what it leaves the file checks, OpenMesh's reader and our importer):
+// any input must either load or throw InputError. Built once per format, MESHTRACE_FUZZ_EXTENSION
+// naming it
 // (".ply", ".obj", ".stl", ".om"); each input is written to a scratch file
 // of that extension. A mesh that loads is built PHONG, computing its normals.
 // OpenMesh is the system's library, not instrumented: ASan sees only our
@@ -15,9 +17,11 @@
 
 #include "formats/openmesh_reader.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace meshtrace;
+  formats::registerOpenMeshFormats();
   static const std::filesystem::path file =
       std::filesystem::temp_directory_path() /
       ("meshtrace-fuzz-" + std::to_string(getpid()) + MESHTRACE_FUZZ_EXTENSION);
@@ -27,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     MemoryBudget budget(std::uint64_t{1} << 30);
-    const Mesh mesh(file, formats::readOpenMeshFile(file, budget), Shading::Phong, Material{});
+    const Mesh mesh(file, readMesh(file, budget), Shading::Phong, Material{});
   } catch (const InputError&) {
   } catch (const MemoryLimitError&) {
   }

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/ply_header.h"
 #include "meshtrace/util/quoted.h"
 
 namespace meshtrace::formats {
 
 namespace {
-constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 // No list in a mesh file needs more items than a file of 4 GiB has bytes.
 constexpr std::int64_t kMaxListLength = std::int64_t{1} << 32;
 constexpr std::uintmax_t kMaxMaterialBytes = std::uintmax_t{16} << 20;
@@ -59,46 +59,17 @@ bool isNumber(std::string_view token) {
 
 // ---- PLY ----
 
-struct PlyProperty {
-  std::string name;
-  int size = 0;       // bytes of a value, or of a list's items
-  int countSize = 0;  // bytes of a list's count; 0 for a single value
-  bool countSigned = false;
-  bool isFloat = false;
-};
-
-struct PlyElement {
-  std::string name;
-  std::uint64_t count = 0;
-  std::vector<PlyProperty> properties;
-  std::size_t line = 0;
-};
-
-// Bytes of a PLY scalar type, 0 if unknown.
-int plyTypeSize(std::string_view type, bool& isFloat) {
-  isFloat = type == "float" || type == "float32" || type == "double" || type == "float64";
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
-      type == "float32")
-    return 4;
-  if (type == "double" || type == "float64") return 8;
-  return 0;
-}
-
 class PlyCheck {
  public:
   PlyCheck(const std::filesystem::path& file, std::string_view bytes)
-      : file_(file), bytes_(bytes) {}
+      : file_(file), bytes_(bytes), header_(readPlyHeader(file, bytes, bytes.size())) {}
 
   void run() {
-    const std::size_t bodyStart = readHeader();
-    checkElements();
-    const std::string_view body = bytes_.substr(bodyStart);
-    if (format_ == "ascii")
+    const std::string_view body = bytes_.substr(header_.bodyStart);
+    if (header_.format == "ascii")
       walkAscii(body);
     else
-      walkBinary(body, format_ == "binary_big_endian");
+      walkBinary(body, header_.format == "binary_big_endian");
   }
 
  private:
@@ -107,125 +78,10 @@ class PlyCheck {
   }
   [[noreturn]] void fail(const std::string& what) const { throw InputError::inFile(file_, what); }
 
-  std::size_t readHeader() {
-    // The header ends at a line that is end_header and nothing else (as
-    // OpenMesh's reader reads it); the text may occur inside other lines.
-    std::size_t bodyStart = std::string_view::npos;
-    for (std::size_t at = 0; at < bytes_.size() && at <= kMaxPlyHeaderBytes;) {
-      const std::size_t eol = bytes_.find('\n', at);
-      if (eol == std::string_view::npos) break;
-      std::string_view text = bytes_.substr(at, eol - at);
-      if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-      at = eol + 1;
-      if (text == "end_header") {
-        bodyStart = at;
-        break;
-      }
-    }
-    if (bodyStart == std::string_view::npos)
-      fail("no end_header line in the first " + std::to_string(kMaxPlyHeaderBytes) +
-           " bytes: not a PLY header");
-    std::size_t line = 0, pos = 0;
-    while (pos < bodyStart) {
-      std::size_t eol = bytes_.find('\n', pos);
-      std::string_view text = bytes_.substr(pos, eol - pos);
-      pos = eol + 1;
-      ++line;
-      if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-      if (text.find('\0') != std::string_view::npos) failAt(line, "a NUL byte in the header");
-      Tokens words(text);
-      std::string_view keyword;
-      if (!words.next(keyword)) continue;
-      if (line == 1) {
-        if (keyword != "ply") failAt(line, "not a PLY file: it must start with 'ply'");
-        continue;
-      }
-      std::vector<std::string_view> args;
-      for (std::string_view w; words.next(w);) args.push_back(w);
-      if (keyword == "comment" || keyword == "obj_info") continue;
-      if (keyword == "end_header") break;
-      if (keyword == "format") {
-        if (args.size() != 2 || args[1] != "1.0" ||
-            (args[0] != "ascii" && args[0] != "binary_little_endian" &&
-             args[0] != "binary_big_endian"))
-          failAt(line,
-                 "format must be ascii, binary_little_endian or binary_big_endian, "
-                 "version 1.0");
-        format_ = args[0];
-      } else if (keyword == "element") {
-        std::int64_t count = 0;
-        if (args.size() != 2 || !isInteger(args[1], count) || count < 0)
-          failAt(line, "element needs a name and a count of 0 or more");
-        elements_.push_back({std::string(args[0]), static_cast<std::uint64_t>(count), {}, line});
-      } else if (keyword == "property") {
-        if (elements_.empty()) failAt(line, "a property before any element");
-        PlyProperty p;
-        bool countIsFloat = false;
-        if (args.size() == 4 && args[0] == "list") {
-          p.countSize = plyTypeSize(args[1], countIsFloat);
-          p.countSigned = args[1] == "char" || args[1] == "short" || args[1] == "int" ||
-                          args[1] == "int8" || args[1] == "int16" || args[1] == "int32";
-          p.size = plyTypeSize(args[2], p.isFloat);
-          p.name = args[3];
-          if (p.countSize == 0 || countIsFloat || p.size == 0)
-            failAt(line, "a list needs an integer count type and a known item type");
-        } else if (args.size() == 2) {
-          p.size = plyTypeSize(args[0], p.isFloat);
-          p.name = args[1];
-          if (p.size == 0) failAt(line, "unknown property type " + quoted(args[0]));
-        } else {
-          failAt(line, "property needs a type and a name (or list, two types and a name)");
-        }
-        elements_.back().properties.push_back(p);
-      } else {
-        failAt(line, "unknown header keyword " + quoted(keyword));
-      }
-    }
-    if (format_.empty()) fail("the header has no format line");
-    bool vertices = false;
-    for (const PlyElement& e : elements_) vertices |= e.name == "vertex";
-    if (!vertices) fail("the header has no vertex element");
-    headerLines_ = line;
-    return bodyStart;
-  }
-
-  // A vertex element with x, y and z, a face element with one list; the
-  // counts against what the body's bytes can hold.
-  void checkElements() {
-    std::uint64_t minimum = 0;
-    const std::uint64_t body = bytes_.size();
-    for (const PlyElement& e : elements_) {
-      std::uint64_t each = 0;
-      for (const PlyProperty& p : e.properties) {
-        // ASCII: a digit and a space per value; binary: the value's bytes.
-        const int bytes = format_ == "ascii" ? 2 : (p.countSize ? p.countSize : p.size);
-        each += bytes;
-        if (isCornerList(e, p)) each += 3 * (format_ == "ascii" ? 2 : p.size);
-      }
-      if (each > 0 && e.count > (body - minimum) / each)
-        failAt(e.line, "element " + e.name + " announces " + std::to_string(e.count) +
-                           ", more than a " + std::to_string(body) + "-byte file can hold");
-      minimum += e.count * each;
-      if (e.name == "vertex") {
-        vertices_ = e.count;
-        for (const char* axis : {"x", "y", "z"}) {
-          bool found = false;
-          for (const PlyProperty& p : e.properties) found |= p.name == axis && !p.countSize;
-          if (!found) failAt(e.line, std::string("the vertex element has no property ") + axis);
-        }
-      }
-      if (e.name == "face") {
-        bool found = false;
-        for (const PlyProperty& p : e.properties) found |= isCornerList(e, p);
-        if (!found) failAt(e.line, "the face element has no list vertex_indices (or vertex_index)");
-      }
-    }
-  }
-
   void walkAscii(std::string_view body) {
-    Tokens tokens(body, headerLines_ + 1);
+    Tokens tokens(body, header_.lines + 1);
     std::string_view token;
-    for (const PlyElement& e : elements_) {
+    for (const PlyElement& e : header_.elements) {
       for (std::uint64_t i = 0; i < e.count; ++i) {
         const auto where = [&] { return e.name + " " + std::to_string(i); };
         for (const PlyProperty& p : e.properties) {
@@ -250,7 +106,7 @@ class PlyCheck {
 
   void walkBinary(std::string_view body, bool bigEndian) {
     std::uint64_t pos = 0;
-    for (const PlyElement& e : elements_) {
+    for (const PlyElement& e : header_.elements) {
       // Records without lists have one size: the element is skipped whole.
       std::uint64_t record = 0;
       bool fixed = true;
@@ -297,27 +153,18 @@ class PlyCheck {
     return v;
   }
 
-  // The list OpenMesh takes a face's corners from.
-  static bool isCornerList(const PlyElement& e, const PlyProperty& p) {
-    return e.name == "face" && p.countSize != 0 &&
-           (p.name == "vertex_indices" || p.name == "vertex_index");
-  }
-
   template <typename Where>
   void checkCorners(const PlyElement& e, const PlyProperty& p, std::int64_t count,
                     const Where& where) const {
-    if (!isCornerList(e, p)) return;
-    if (count < 3 || static_cast<std::uint64_t>(count) > vertices_)
+    if (!isPlyCornerList(e, p)) return;
+    if (count < 3 || static_cast<std::uint64_t>(count) > header_.vertices)
       fail(where() + ": " + p.name + " lists " + std::to_string(count) +
-           " corners; a face has 3 to " + std::to_string(vertices_) + " (the vertex count)");
+           " corners; a face has 3 to " + std::to_string(header_.vertices) + " (the vertex count)");
   }
 
   const std::filesystem::path& file_;
   std::string_view bytes_;
-  std::string format_;
-  std::vector<PlyElement> elements_;
-  std::uint64_t vertices_ = 0;
-  std::size_t headerLines_ = 0;
+  PlyHeader header_;
 };
 
 // ---- STL ----

@@ -10,12 +10,15 @@
 #include <algorithm>
 #include <cctype>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "formats/file_checks.h"
+#include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/ply_reader.h"
 
 namespace meshtrace::formats {
 
@@ -33,7 +36,7 @@ constexpr std::uint64_t kBytesPerVertex = sizeof(OpenMesh::Vec3d) + 4 + sizeof(V
 constexpr std::uint64_t kBytesPerFace = 4;
 constexpr std::size_t kFirstBlock = 4096;
 
-// Takes each face's corners as OFF's reader does (fan triangles) instead
+// Takes each face's corners as OFF's reader does (appendPolygonTriangles) instead
 // of building OpenMesh's halfedge topology, which drops or splits the
 // faces a non-manifold mesh has. Ignores the readers' reserve calls: they
 // pass counts from the file's header, unchecked.
@@ -70,9 +73,10 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
       }
     }
     planTriangles(corners.size() - 2);
-    const auto index = [](OpenMesh::VertexHandle h) { return static_cast<std::uint32_t>(h.idx()); };
-    for (std::size_t k = 2; k < corners.size(); ++k)
-      out_.triangles.push_back({index(corners[0]), index(corners[k - 1]), index(corners[k])});
+    indices_.clear();
+    for (const OpenMesh::VertexHandle& c : corners)
+      indices_.push_back(static_cast<std::uint32_t>(c.idx()));
+    appendPolygonTriangles(indices_, out_.triangles);
     return mesh_.new_face();
   }
 
@@ -117,13 +121,14 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
   std::size_t plannedVertices_ = 0;
   std::size_t plannedFaces_ = 0;
   std::size_t faces_ = 0;
+  std::vector<std::uint32_t> indices_;  // of the face being added
   std::string problem_;
 };
 
 // OM files store the halfedge structure: their faces come with halfedges
 // rather than corner lists. Walks each face's loop (checking every handle
 // against the arrays, and stopping after as many steps as there are
-// halfedges) into fan triangles; returns what is wrong, or "".
+// halfedges) into triangles; returns what is wrong, or "".
 std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out) {
   const auto halfedges = static_cast<int>(mesh.n_halfedges());
   const auto vertices = static_cast<int>(mesh.n_vertices());
@@ -147,8 +152,7 @@ std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out) {
     } while (h != first);
     if (corners.size() < 3)
       return face + " has " + std::to_string(corners.size()) + " corners; at least 3 are needed";
-    for (std::size_t k = 2; k < corners.size(); ++k)
-      out.triangles.push_back({corners[0], corners[k - 1], corners[k]});
+    appendPolygonTriangles(corners, out.triangles);
   }
   return "";
 }
@@ -218,8 +222,15 @@ void silenceOpenMesh() {
 void registerOpenMeshFormats() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const char* extension : {".ply", ".obj", ".stl", ".om"})
+    for (const char* extension : {".obj", ".stl", ".om"})
       registerMeshReader(extension, readOpenMeshFile);
+    // Binary PLY is read by the core's reader, streamed (and quicker than
+    // OpenMesh's generic properties); what it leaves, ASCII PLY above all,
+    // comes here.
+    registerMeshReader(".ply", [](const std::filesystem::path& file, MemoryBudget& budget) {
+      if (std::optional<MeshData> mesh = readBinaryPly(file, budget)) return std::move(*mesh);
+      return readOpenMeshFile(file, budget);
+    });
   });
 }
 

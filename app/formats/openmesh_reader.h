@@ -9,8 +9,10 @@
 
 namespace meshtrace::formats {
 
-// Registers readOpenMeshFile for .ply, .obj, .stl and .om (registerMeshReader);
-// only the first call does, so every loader may call it first.
+// Registers readOpenMeshFile for .obj, .stl and .om, and for .ply the
+// core's binary PLY reader (readBinaryPly), with readOpenMeshFile for the
+// PLY files it leaves (registerMeshReader); only the first call does, so
+// every loader may call it first.
 void registerOpenMeshFormats();
 
 // Reads a mesh with the OpenMesh reader of its extension, polygons

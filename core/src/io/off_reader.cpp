@@ -12,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "io/element_problems.h"
 #include "io/file_source.h"
 #include "io/line_pieces.h"
+#include "io/mesh_arrays.h"
 #include "io/text.h"
+#include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
 
 namespace meshtrace {
@@ -64,10 +67,7 @@ class OffParser {
                                    std::to_string(nf_) + " faces, more than a " +
                                    std::to_string(size) + "-byte file can hold");
     }
-    const std::string name = file_.filename().string();
-    budget_.reserve(vertexCount * sizeof(Vec3), "load",
-                    "the " + std::to_string(nv_) + " vertices of " + name);
-    mesh_.vertices.resize(static_cast<std::size_t>(nv_));
+    mesh_arrays::sizeVertices(mesh_, budget_, static_cast<std::size_t>(nv_), file_);
     growTriangles(static_cast<std::size_t>(nf_));  // exact for a triangle mesh
     readBody(pieces, std::move(first), headerLines);
     if (error_) std::rethrow_exception(error_);
@@ -91,6 +91,7 @@ class OffParser {
     std::size_t lineBefore = 0;  // the number of the line before its first
     std::int64_t firstElement = 0;
     std::vector<TriangleIndices> triangles;
+    std::vector<std::uint32_t> corners;  // of the face being read
     std::exception_ptr error;
 
     std::string_view text() const { return piece.text().substr(begin); }
@@ -195,15 +196,8 @@ class OffParser {
         }));
   }
 
-  // Room for `capacity` triangles, planned before it is allocated: the new
-  // array, and the old one until it is copied.
   void growTriangles(std::size_t capacity) {
-    const std::size_t old = mesh_.triangles.capacity();
-    budget_.reserve(capacity * sizeof(TriangleIndices), "load",
-                    "the triangles of " + file_.filename().string() + " (room for " +
-                        std::to_string(capacity) + ")");
-    mesh_.triangles.reserve(capacity);
-    budget_.release(old * sizeof(TriangleIndices));
+    mesh_arrays::growTriangles(mesh_, budget_, capacity, file_);
   }
 
   static void count(Chunk& c) {
@@ -250,7 +244,7 @@ class OffParser {
         if (e < nv_)
           mesh_.vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
         else
-          readFace(line, e - nv_, lineNumber, c.triangles);
+          readFace(line, e - nv_, lineNumber, c.corners, c.triangles);
       } catch (const InputError&) {
         c.error = std::current_exception();
         return;
@@ -268,43 +262,34 @@ class OffParser {
       std::string_view token;
       if (!tokens.next(token)) fail(" has fewer than 3 coordinates");
       if (!text::parseDouble(token, v[k])) fail(": " + quoted(token) + " is not a number");
-      if (!std::isfinite(v[k])) fail(" has a non-finite coordinate " + quoted(token));
+      if (!std::isfinite(v[k])) fail(element_problems::nonFiniteCoordinate(token));
     }
     return v;
   }
 
   void readFace(std::string_view line, std::int64_t index, std::size_t lineNumber,
+                std::vector<std::uint32_t>& corners,
                 std::vector<TriangleIndices>& triangles) const {
     const auto fail = [&](const std::string& what) {
       throw InputError::atLine(file_, lineNumber, "face " + std::to_string(index) + what);
     };
     text::TokenReader tokens(line);
     std::string_view token;
-    std::int64_t corners = 0;
+    std::int64_t count = 0;
     tokens.next(token);
-    if (!text::parseInt64(token, corners)) fail(": bad corner count " + quoted(token));
-    if (corners < 3) fail(" has " + std::to_string(corners) + " corners; at least 3 are needed");
-    // A polygon lists each of its corners once: more corners than the mesh
-    // has vertices would only repeat them, and fan into as many triangles.
-    if (corners > nv_) {
-      fail(" has " + std::to_string(corners) + " corners, more than the " + std::to_string(nv_) +
-           " vertices of the mesh");
-    }
-    std::uint32_t first = 0, previous = 0;
-    for (std::int64_t k = 0; k < corners; ++k) {
+    if (!text::parseInt64(token, count)) fail(": bad corner count " + quoted(token));
+    if (!element_problems::validCornerCount(count, nv_))
+      fail(element_problems::badCornerCount(count, nv_));
+    corners.clear();
+    for (std::int64_t k = 0; k < count; ++k) {
       std::int64_t v = 0;
       if (!tokens.next(token))
-        fail(" announces " + std::to_string(corners) + " corners but lists " + std::to_string(k));
+        fail(" announces " + std::to_string(count) + " corners but lists " + std::to_string(k));
       if (!text::parseInt64(token, v)) fail(": bad vertex index " + quoted(token));
-      if (v < 0 || v >= nv_) {
-        fail(": vertex index " + std::to_string(v) + " out of range (the mesh has " +
-             std::to_string(nv_) + " vertices)");
-      }
-      const auto current = static_cast<std::uint32_t>(v);
-      if (k == 0) first = current;
-      if (k >= 2) triangles.push_back({first, previous, current});  // fan
-      previous = current;
+      if (!element_problems::validIndex(v, nv_)) fail(element_problems::indexOutOfRange(v, nv_));
+      corners.push_back(static_cast<std::uint32_t>(v));
     }
+    appendPolygonTriangles(corners, triangles);
     // Any further values on the line (face colours) are ignored.
   }
 

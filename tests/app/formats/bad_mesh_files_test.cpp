@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,13 @@ const std::string kPlyBinary3 =
     "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
 const std::string kVertices3 = "0 0 0\n1 0 0\n0 1 0\n";
 const std::string kBinaryVertices3(36, '\0');
+std::string bigEndian32(std::uint32_t v) {
+  std::string bytes = littleEndian32(v);
+  return {bytes.rbegin(), bytes.rend()};
+}
+// A float NaN as vertex 1's y, in little-endian bytes.
+const std::string kNanVertices3 =
+    std::string(16, '\0') + std::string("\0\0\xc0\x7f", 4) + std::string(16, '\0');
 
 std::vector<BadMesh> badMeshes() {
   return {
@@ -79,6 +87,17 @@ std::vector<BadMesh> badMeshes() {
       {"binary_short.ply",
        kPlyBinary3 + kBinaryVertices3 + littleEndian32(3) + "\1\0\0\0",
        {"binary_short.ply", "ends at face 0"}},
+      {"binary_vertices_short.ply",
+       kPlyBinary3 + kBinaryVertices3.substr(0, 20),
+       {"binary_vertices_short.ply", "ends at vertex 1 of 3"}},
+      {"binary_nan.ply",
+       kPlyBinary3 + kNanVertices3 + littleEndian32(3) + littleEndian32(0) + littleEndian32(1) +
+           littleEndian32(2),
+       {"binary_nan.ply", "vertex 1", "non-finite"}},
+      {"big_endian_out_of_range.ply",
+       std::regex_replace(kPlyBinary3, std::regex("little"), "big") + kBinaryVertices3 +
+           bigEndian32(3) + bigEndian32(0) + bigEndian32(1) + bigEndian32(5),
+       {"big_endian_out_of_range.ply", "face 0", "vertex index 5 out of range"}},
       {"truncated_binary.stl",
        std::string(80, ' ') + littleEndian32(2) + std::string(60, '\0'),
        {"truncated_binary.stl", "neither a binary STL"}},

@@ -2,6 +2,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstdio>
@@ -31,6 +32,13 @@ void putLittleEndian(std::string& out, T value) {
   char bytes[sizeof(T)];
   std::memcpy(bytes, &value, sizeof(T));
   out.append(bytes, sizeof(T));
+}
+
+template <typename T>
+void putInOrder(std::string& out, T value, bool bigEndian) {
+  const std::size_t at = out.size();
+  putLittleEndian(out, value);
+  if (bigEndian) std::reverse(out.begin() + static_cast<std::ptrdiff_t>(at), out.end());
 }
 
 void putPoint(std::string& out, const Vec3& p) {
@@ -78,13 +86,17 @@ std::string meshBytes(const MeshData& mesh, MeshFormat format) {
              std::to_string(mesh.triangles.size()) + " 0\n" + offStyleBody(mesh);
     case MeshFormat::PlyAscii: return plyHeader(mesh, "ascii") + offStyleBody(mesh);
     case MeshFormat::PlyBinary:
-      out = plyHeader(mesh, "binary_little_endian");
-      for (const Vec3& v : mesh.vertices) putPoint(out, v);
+    case MeshFormat::PlyBinaryBigEndian: {
+      const bool bigEndian = format == MeshFormat::PlyBinaryBigEndian;
+      out = plyHeader(mesh, bigEndian ? "binary_big_endian" : "binary_little_endian");
+      for (const Vec3& v : mesh.vertices)
+        for (int k = 0; k < 3; ++k) putInOrder(out, static_cast<float>(v[k]), bigEndian);
       for (const TriangleIndices& t : mesh.triangles) {
-        putLittleEndian(out, std::uint8_t{3});
-        for (std::uint32_t i : t) putLittleEndian(out, static_cast<std::int32_t>(i));
+        putInOrder(out, std::uint8_t{3}, bigEndian);
+        for (std::uint32_t i : t) putInOrder(out, static_cast<std::int32_t>(i), bigEndian);
       }
       return out;
+    }
     case MeshFormat::Obj:
       out = "# written by the tests\n";
       for (const Vec3& v : mesh.vertices) out += "v " + pointText(v) + "\n";
@@ -116,9 +128,9 @@ std::string meshBytes(const MeshData& mesh, MeshFormat format) {
 }  // namespace
 
 const std::vector<MeshFormat>& allMeshFormats() {
-  static const std::vector<MeshFormat> all = {MeshFormat::Off,       MeshFormat::PlyAscii,
-                                              MeshFormat::PlyBinary, MeshFormat::Obj,
-                                              MeshFormat::StlAscii,  MeshFormat::StlBinary};
+  static const std::vector<MeshFormat> all = {
+      MeshFormat::Off, MeshFormat::PlyAscii, MeshFormat::PlyBinary, MeshFormat::PlyBinaryBigEndian,
+      MeshFormat::Obj, MeshFormat::StlAscii, MeshFormat::StlBinary};
   return all;
 }
 
@@ -127,6 +139,7 @@ std::string formatName(MeshFormat format) {
     case MeshFormat::Off: return "off";
     case MeshFormat::PlyAscii: return "ply-ascii";
     case MeshFormat::PlyBinary: return "ply-binary";
+    case MeshFormat::PlyBinaryBigEndian: return "ply-binary-big-endian";
     case MeshFormat::Obj: return "obj";
     case MeshFormat::StlAscii: return "stl-ascii";
     case MeshFormat::StlBinary: return "stl-binary";
@@ -139,7 +152,8 @@ std::string formatExtension(MeshFormat format) {
   switch (format) {
     case MeshFormat::Off: return ".off";
     case MeshFormat::PlyAscii:
-    case MeshFormat::PlyBinary: return ".ply";
+    case MeshFormat::PlyBinary:
+    case MeshFormat::PlyBinaryBigEndian: return ".ply";
     case MeshFormat::Obj: return ".obj";
     case MeshFormat::StlAscii:
     case MeshFormat::StlBinary: return ".stl";

@@ -10,7 +10,16 @@
 
 namespace meshtrace::test {
 
-enum class MeshFormat { Off, PlyAscii, PlyBinary, Obj, StlAscii, StlBinary, Om };
+enum class MeshFormat {
+  Off,
+  PlyAscii,
+  PlyBinary,
+  PlyBinaryBigEndian,
+  Obj,
+  StlAscii,
+  StlBinary,
+  Om
+};
 
 // Every format, and its name for test output ("ply-binary").
 const std::vector<MeshFormat>& allMeshFormats();

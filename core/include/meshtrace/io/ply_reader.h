@@ -1,0 +1,25 @@
+#pragma once
+// Reader for binary PLY meshes (either byte order), streamed from the file
+// as OFF's reader streams its text: the triangles are those of OFF's reader
+// for the same polygons.
+#include <filesystem>
+#include <optional>
+
+#include "meshtrace/geometry/mesh.h"
+#include "meshtrace/io/memory_budget.h"
+
+namespace meshtrace {
+
+// Reads a binary PLY file whose vertex element has float or double x, y
+// and z (its other properties skipped) and whose face element lists its
+// corners with integer indices; other elements and properties are skipped
+// by their size. Returns std::nullopt, having read only the header, for a
+// PLY file it leaves to other readers: ASCII, a vertex element with lists
+// or integer coordinates, faces before the vertices. Throws InputError
+// naming the file and the element ("face 17") on bad input: a header
+// readPlyHeader refuses, a truncated body, corner counts below 3 or above
+// the vertex count, indices out of range, non-finite coordinates. The
+// arrays are reserved in `budget` before they are allocated.
+std::optional<MeshData> readBinaryPly(const std::filesystem::path& file, MemoryBudget& budget);
+
+}  // namespace meshtrace

@@ -1,0 +1,222 @@
+// The binary PLY reader: the mesh OFF's reader reads from the same
+// polygons, in either byte order and for every type a file may use; the
+// files it leaves to other readers; and bad files refused with an
+// InputError naming the file and the element.
+#include "meshtrace/io/ply_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "meshtrace/io/off_reader.h"
+#include "support/files.h"
+#include "support/input_errors.h"
+#include "support/paths.h"
+#include "support/polygon_files.h"
+
+namespace meshtrace {
+namespace {
+
+using test::expectMentions;
+using test::PlyLayout;
+
+std::optional<MeshData> readPlyBytes(const std::string& bytes) {
+  MemoryBudget budget(defaultMemoryLimit());
+  return readBinaryPly(test::writeFile(test::scratchDir() / "mesh.ply", bytes), budget);
+}
+
+MeshData readOffOf(const test::PolygonMesh& mesh) {
+  return readOff(test::writeFile(test::scratchDir() / "mesh.off", test::offText(mesh)));
+}
+
+class BinaryPlyLayouts : public ::testing::TestWithParam<PlyLayout> {};
+
+TEST_P(BinaryPlyLayouts, ReadTheMeshOffsReaderReads) {
+  const test::PolygonMesh polygons = test::polygonMesh();
+  const MeshData off = readOffOf(polygons);
+  const std::optional<MeshData> ply = readPlyBytes(test::binaryPly(polygons, GetParam()));
+  ASSERT_TRUE(ply.has_value());
+  EXPECT_EQ(ply->vertices, off.vertices);
+  EXPECT_EQ(ply->triangles, off.triangles);
+  EXPECT_EQ(ply->triangles.size(), 2u + 1u + 4u + 1u + 3u + 2u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Layouts, BinaryPlyLayouts,
+                         ::testing::Values(PlyLayout{false, "float", "uchar", "int", false},
+                                           PlyLayout{true, "float", "uchar", "int", false},
+                                           PlyLayout{false, "double", "int", "uint", true},
+                                           PlyLayout{true, "double", "ushort", "ushort", true},
+                                           PlyLayout{true, "float32", "char", "short", true},
+                                           PlyLayout{false, "float64", "uint8", "uint32", true},
+                                           PlyLayout{true, "float", "short", "int32", false},
+                                           PlyLayout{false, "float", "uint", "uchar", true}),
+                         [](const auto& info) {
+                           const PlyLayout& l = info.param;
+                           return std::string(l.bigEndian ? "big_" : "little_") + l.coordinateType +
+                                  "_" + l.countType + "_" + l.indexType +
+                                  (l.extras ? "_extras" : "");
+                         });
+
+// More than the reader's buffer holds: records are cut at its end.
+TEST(BinaryPly, ReadsAFileLargerThanItsBufferAsOffDoes) {
+  const test::PolygonMesh polygons = test::polygonMesh(20000);
+  for (bool bigEndian : {false, true}) {
+    const std::string bytes =
+        test::binaryPly(polygons, PlyLayout{bigEndian, "double", "uchar", "int", true});
+    ASSERT_GT(bytes.size(), std::size_t{3} << 20);
+    const std::optional<MeshData> ply = readPlyBytes(bytes);
+    ASSERT_TRUE(ply.has_value());
+    const MeshData off = readOffOf(polygons);
+    EXPECT_EQ(ply->vertices, off.vertices);
+    EXPECT_EQ(ply->triangles, off.triangles);
+  }
+}
+
+TEST(BinaryPly, LeavesAsciiAndListValuedVerticesToOtherReaders) {
+  EXPECT_FALSE(
+      readPlyBytes("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                   "property float y\nproperty float z\nend_header\n0 0 0\n"));
+  PlyLayout layout;
+  std::string declarations =
+      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+      "property list uchar float weights\n";
+  EXPECT_FALSE(readPlyBytes(test::plyHeader(layout, declarations) + std::string(13, '\0')));
+  declarations = "element vertex 1\nproperty int x\nproperty int y\nproperty int z\n";
+  EXPECT_FALSE(readPlyBytes(test::plyHeader(layout, declarations) + std::string(12, '\0')));
+}
+
+// A mesh of three vertices and two faces, its bytes built value by value.
+struct SmallPly {
+  PlyLayout layout;
+  test::PlyValues values;
+  explicit SmallPly(bool bigEndian = false, const char* countType = "uchar",
+                    const char* indexType = "int")
+      : layout{bigEndian, "float", countType, indexType, false}, values(bigEndian) {}
+
+  std::string header(int faces = 2) const {
+    return test::plyHeader(
+        layout,
+        "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face " +
+            std::to_string(faces) + "\nproperty list " + layout.countType + " " + layout.indexType +
+            " vertex_indices\n");
+  }
+  SmallPly& vertices(double badValue = 0.0) {
+    for (double v : {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, badValue}) values.put("float", v);
+    return *this;
+  }
+  SmallPly& face(std::vector<double> corners) {
+    values.put(layout.countType, static_cast<double>(corners.size()));
+    for (double c : corners) values.put(layout.indexType, c);
+    return *this;
+  }
+  SmallPly& count(double n) {
+    values.put(layout.countType, n);
+    return *this;
+  }
+  std::string bytes(int faces = 2) { return header(faces) + values.bytes(); }
+};
+
+std::string plyErrorOf(const std::string& bytes, std::uint64_t memory = defaultMemoryLimit()) {
+  const auto file = test::writeFile(test::scratchDir() / "mesh.ply", bytes);
+  MemoryBudget budget(memory);
+  return test::inputErrorOf([&] { readBinaryPly(file, budget); });
+}
+
+TEST(BinaryPly, ReadsTheSmallMeshTheBadOnesBreak) {
+  for (bool bigEndian : {false, true}) {
+    const auto mesh =
+        readPlyBytes(SmallPly(bigEndian).vertices().face({0, 1, 2}).face({2, 1, 0}).bytes());
+    ASSERT_TRUE(mesh.has_value());
+    EXPECT_EQ(mesh->triangles, (std::vector<TriangleIndices>{{0, 1, 2}, {2, 1, 0}}));
+  }
+}
+
+TEST(BinaryPly, RefusesNonFiniteCoordinatesNamingTheVertex) {
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), HUGE_VAL, -HUGE_VAL})
+    for (bool bigEndian : {false, true})
+      expectMentions(plyErrorOf(SmallPly(bigEndian).vertices(bad).face({0, 1, 2}).bytes(1)),
+                     {"mesh.ply", "vertex 2", "non-finite"});
+}
+
+TEST(BinaryPly, RefusesIndicesOutOfRangeNamingTheFace) {
+  for (bool bigEndian : {false, true}) {
+    expectMentions(
+        plyErrorOf(SmallPly(bigEndian).vertices().face({0, 1, 2}).face({0, 3, 1}).bytes()),
+        {"mesh.ply", "face 1", "vertex index 3 out of range", "3 vertices"});
+    expectMentions(
+        plyErrorOf(SmallPly(bigEndian).vertices().face({0, 1, 2}).face({0, -1, 1}).bytes()),
+        {"mesh.ply", "face 1", "vertex index -1 out of range"});
+  }
+  expectMentions(plyErrorOf(SmallPly(false, "uchar", "uint")
+                                .vertices()
+                                .face({0, 1, 2})
+                                .face({0, 4294967295.0, 1})
+                                .bytes()),
+                 {"mesh.ply", "face 1", "vertex index 4294967295 out of range"});
+}
+
+TEST(BinaryPly, RefusesCornerCountsBelowThreeOrAboveTheVerticesNamingTheFace) {
+  expectMentions(plyErrorOf(SmallPly().vertices().face({0, 1, 2}).face({0, 1}).bytes()),
+                 {"mesh.ply", "face 1", "2 corners; at least 3"});
+  expectMentions(plyErrorOf(SmallPly(true, "char").vertices().face({0, 1, 2}).count(-3).bytes()),
+                 {"mesh.ply", "face 1", "-3 corners"});
+  // Absurd counts are refused before anything is read or reserved for them.
+  for (bool bigEndian : {false, true})
+    expectMentions(
+        plyErrorOf(SmallPly(bigEndian, "uint").vertices().count(4000000000.0).bytes(1), 1 << 20),
+        {"mesh.ply", "face 0", "4000000000 corners, more than the 3 vertices"});
+  expectMentions(plyErrorOf(SmallPly(false, "int").vertices().count(-2147483648.0).bytes(1)),
+                 {"mesh.ply", "face 0", "-2147483648 corners"});
+  expectMentions(plyErrorOf(SmallPly(false, "ushort").vertices().count(4).bytes(1)),
+                 {"mesh.ply", "face 0", "4 corners, more than the 3 vertices"});
+}
+
+TEST(BinaryPly, RefusesATruncatedFileNamingTheElementItEndsAt) {
+  std::string bytes = SmallPly().vertices().face({0, 1, 2}).face({2, 1, 0}).bytes();
+  expectMentions(plyErrorOf(bytes.substr(0, bytes.size() - 1)),
+                 {"mesh.ply", "file ends at face 1 of 2"});
+  expectMentions(plyErrorOf(bytes.substr(0, bytes.size() - 14)),
+                 {"mesh.ply", "file ends at face 0 of 2"});
+  expectMentions(
+      plyErrorOf(SmallPly().vertices().bytes(0).substr(0, SmallPly().header(0).size() + 30)),
+      {"mesh.ply", "file ends at vertex 2 of 3"});
+}
+
+// Counts in the header are checked against the file's size before
+// anything is reserved: no MemoryLimitError, however small the budget.
+TEST(BinaryPly, RefusesHeaderCountsTheFileCannotHoldBeforeReserving) {
+  for (const char* element : {"vertex 2000000000", "face 1000000000"}) {
+    const std::string declarations =
+        std::string("element ") + (element[0] == 'v' ? element : "vertex 3") +
+        "\nproperty float x\nproperty float y\nproperty float z\n" +
+        (element[0] == 'f'
+             ? std::string("element ") + element + "\nproperty list uchar int vertex_indices\n"
+             : "");
+    expectMentions(plyErrorOf(test::plyHeader({}, declarations) + std::string(64, '\0'), 1 << 20),
+                   {"mesh.ply:", "can hold"});
+  }
+}
+
+TEST(BinaryPly, RefusesAbsurdListsOfOtherElementsNamingThem) {
+  const std::string declarations =
+      "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+      "element region 1\nproperty list int uint members\n";
+  for (double count : {2147483647.0, -5.0}) {
+    test::PlyValues values(false);
+    values.put("int", count);
+    values.put("uint", 1);
+    expectMentions(plyErrorOf(test::plyHeader({}, declarations) + values.bytes()),
+                   {"mesh.ply", "region 0", count < 0 ? "-5 items" : "file ends at region 0"});
+  }
+}
+
+TEST(BinaryPly, RefusesAnEmptyFileNamingIt) {
+  expectMentions(plyErrorOf(""), {"mesh.ply", "empty file"});
+}
+
+}  // namespace
+}  // namespace meshtrace
