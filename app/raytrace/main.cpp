@@ -224,7 +224,7 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path dir = args.size() > 0 ? args[0] : "scenes";
     const std::filesystem::path outDir = args.size() > 1 ? args[1] : "results";
-    const std::optional<app::Shard> shard = app::shardToRun(shardOption);
+    const std::optional<Shard> shard = app::shardToRun(shardOption);
     if (!shard) return 2;
     return app::runOverFolder(
         dir, outDir, "", *memoryLimit, [](const Scene&) { return true; },
