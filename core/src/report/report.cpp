@@ -15,6 +15,7 @@
 #include "meshtrace/report/image_compare.h"
 #include "meshtrace/report/left_out.h"
 #include "meshtrace/report/plot.h"
+#include "report/report_files.h"
 #include "util/parallel_tiles.h"
 
 namespace meshtrace {
@@ -236,8 +237,8 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
   return report;
 }
 
-void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
-                 const std::string& stability) {
+void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& measured,
+                 const std::string& stability, const ReportShare& share) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)
@@ -246,9 +247,12 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   // Every file goes to a temporary first; none replaces an earlier report's
   // until all are written (the plots first, report.md last).
   std::vector<OutputFile> files;
-  std::ostringstream csv, md;
-  csv << "scene,group,config,accel,triangle,precision,step,samples,seconds,rmse,psnr,"
-         "hit_differs,max_normal_deg,against,reference\n";
+  // The data first; the markdown and the plots are made from it as read
+  // back, so that a report merged from shares' files is this one.
+  const std::string csv = report_files::rowsCsv(measured);
+  const std::string scenesCsv = report_files::scenesCsv(measured);
+  const std::vector<SceneReport> scenes = report_files::parseScenes(scenesCsv, csv, dir);
+  std::ostringstream md;
   md << "# Error against run time\n\n"
      << "Each configuration renders the whole image once on all cores; the time is wall time "
         "(including the BVH build), so it varies with machine load. RMSE and PSNR are against "
@@ -261,9 +265,12 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
      << "Plots (gnuplot, from report.csv; plot_SCENE.gp redraws them): RMSE against run "
         "time per configuration group with the JPEG-noise threshold, and the samples sweep's "
         "RMSE against samples per pixel with its power-law fit, both on log axes.\n\n";
+  if (share.shard.count > 1)
+    md << "This folder holds share " << share.shard.text() << " of a run of " << share.scenes.size()
+       << " scenes; `raytrace --report-merge` joins the shares' folders into one report.\n\n";
   char buf[512];
   for (const SceneReport& s : scenes) {
-    const std::string name = s.scene.stem().string();
+    const std::string name = report_files::sceneName(s);
     md << "## " << name << "\n\nReference: " << s.reference << "; within JPEG noise means RMSE <= "
        << (std::snprintf(buf, sizeof buf, "%.3f", s.jpegNoiseRmse), buf) << ".\n\n"
        << "| configuration | group | seconds | RMSE | PSNR dB | hit differs | normal deg |\n"
@@ -275,13 +282,6 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
                     c.name.c_str(), c.group.c_str(), r.seconds, r.rmse, r.psnr,
                     100.0 * r.hitDiffers, r.maxNormalDegrees);
       md << buf;
-      const std::string& against = r.against == "converged" ? s.converged : s.reference;
-      std::snprintf(buf, sizeof buf, "%s,%s,%s,%s,%s,%s,%d,%d,%.6f,%.4f,%.3f,%.6f,%.6g,%s,\"%s\"\n",
-                    name.c_str(), c.group.c_str(), c.name.c_str(), toString(c.trace.accel),
-                    toString(c.trace.triangle.test), toString(c.trace.triangle.precision), c.step,
-                    c.samples, r.seconds, r.rmse, r.psnr, r.hitDiffers, r.maxNormalDegrees,
-                    r.against.c_str(), against.c_str());
-      csv << buf;
       if (r.against == "reference" && r.rmse <= s.jpegNoiseRmse &&
           (!cheapest || r.seconds < cheapest->seconds))
         cheapest = &r;
@@ -310,10 +310,10 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   // The plots, drawn by gnuplot from the finished CSV; their scripts are
   // kept beside it to redraw or edit them.
   for (const SceneReport& s : scenes) {
-    const std::string name = s.scene.stem().string();
+    const std::string name = report_files::sceneName(s);
     files.emplace_back(dir / ("plot_" + name + ".gp")).write(plotScript(s));
     files.back().finish();  // closed now: a report of many scenes holds no descriptors open
-    files.emplace_back(dir / ("plot_" + name + ".png")).write(plotPng(s, csv.str()));
+    files.emplace_back(dir / ("plot_" + name + ".png")).write(plotPng(s, csv));
     files.back().finish();
   }
   md << "## Stability suite\n\n"
@@ -325,7 +325,13 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
         "quad-precision reference on grazing, sliver, huge and tiny triangles. Mrays/s is the "
         "brute-force box test on one core.\n\n"
      << stability << "\n";
-  files.emplace_back(dir / "report.csv").write(csv.str());
+  ReportShare whole = share;
+  if (whole.scenes.empty())
+    for (const SceneReport& s : scenes) whole.scenes.push_back(s.scene);
+  files.emplace_back(dir / report_files::kStability).write(stability);
+  files.emplace_back(dir / report_files::kShare).write(report_files::shareText(whole));
+  files.emplace_back(dir / report_files::kScenes).write(scenesCsv);
+  files.emplace_back(dir / report_files::kRows).write(csv);
   files.emplace_back(dir / "report.md").write(md.str());
   commitTogether(files);
 }
