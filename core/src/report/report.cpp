@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "meshtrace/io/output_file.h"
+#include "meshtrace/io/reference_lookup.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/progressive.h"
 #include "meshtrace/render/surface.h"
@@ -144,15 +145,11 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) 
 }
 
 std::filesystem::path findReferenceImage(const Scene& scene) {
-  const auto dir = scene.file.parent_path();
-  const std::string stem = scene.file.stem().string();
-  for (const auto& p : {dir / ".." / ".." / "expected_results" / (stem + ".jpg"),
-                        dir / ".." / "expected_results" / (stem + ".png")}) {
-    if (!std::filesystem::is_regular_file(p)) continue;
-    const Image8 ref = readImage(p);
-    if (ref.width == scene.camera.width() && ref.height == scene.camera.height()) return p;
-  }
-  return {};
+  const std::optional<std::filesystem::path> found = findReference(scene.file);
+  if (!found) return {};
+  const Image8 ref = readImage(*found);
+  if (ref.width != scene.camera.width() || ref.height != scene.camera.height()) return {};
+  return *found;
 }
 
 SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& progress) {
@@ -171,15 +168,17 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
   if (!refFile.empty()) {
     reference = readImage(refFile);
     jpegReference = refFile.extension() == ".jpg";
-    report.reference = refFile.filename().string() +
-                       (jpegReference ? " (seed reference, JPEG)" : " (our expected image)");
+    report.reference = refFile.string() + (jpegReference ? " (a stored JPEG: the seed's reference)"
+                                                         : " (a stored render)");
     // The conformance test's bound: our render, JPEG-encoded, within 0.6.
     report.jpegNoiseRmse =
         jpegReference ? 0.6 : compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
   } else {
     ReportConfig high{"reference", "64 samples/pixel", TraceOptions{}, 1, 64};
     reference = quantize(renderConfig(scene, high, threads));
-    report.reference = "our render with 64 samples/pixel (no expected image found)";
+    report.reference =
+        "our render with 64 samples/pixel (no stored image of the scene's size in an "
+        "expected_results/ folder beside the scene's folders)";
     report.jpegNoiseRmse = compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
   }
 
@@ -268,10 +267,18 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   if (share.shard.count > 1)
     md << "This folder holds share " << share.shard.text() << " of a run of " << share.scenes.size()
        << " scenes; `raytrace --report-merge` joins the shares' folders into one report.\n\n";
+  if (!scenes.empty()) {
+    md << "| scene | scored against | samples sweep against |\n|---|---|---|\n";
+    for (const SceneReport& s : scenes)
+      md << "| " << report_files::sceneName(s) << " | " << s.reference << " | "
+         << (s.converged.empty() ? "-" : s.converged) << " |\n";
+    md << "\n";
+  }
   char buf[512];
   for (const SceneReport& s : scenes) {
     const std::string name = report_files::sceneName(s);
-    md << "## " << name << "\n\nReference: " << s.reference << "; within JPEG noise means RMSE <= "
+    md << "## " << name << "\n\nScored against: " << s.reference
+       << "; within JPEG noise means RMSE <= "
        << (std::snprintf(buf, sizeof buf, "%.3f", s.jpegNoiseRmse), buf) << ".\n\n"
        << "| configuration | group | seconds | RMSE | PSNR dB | hit differs | normal deg |\n"
        << "|---|---|---|---|---|---|---|\n";

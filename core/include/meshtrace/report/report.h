@@ -63,9 +63,9 @@ std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::str
 // traced pixel over its block; several samples averaged.
 Image renderConfig(const Scene& scene, const ReportConfig& config, int threads = 0);
 
-// The seed's expected image for a scene at <dir>/../../expected_results/<stem>.jpg
-// (the seed layout) or our own at <dir>/../expected_results/<stem>.png, if it
-// exists with the scene's size.
+// The scene's stored reference image (findReference: the seed's
+// expected_results/<stem>.jpg, our expected_results/<stem>.png), if it has
+// the scene's size; empty if not.
 std::filesystem::path findReferenceImage(const Scene& scene);
 
 // Told before each configuration is measured: how many are done, of how
