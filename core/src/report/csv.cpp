@@ -53,10 +53,6 @@ std::vector<Row> parse(std::string_view text, const std::filesystem::path& file)
       ++line;
       break;
     }
-    if (!rows.empty() && row.fields.size() != rows[0].fields.size())
-      throw InputError::atLine(file, row.line,
-                               std::to_string(row.fields.size()) + " fields where the header has " +
-                                   std::to_string(rows[0].fields.size()));
     rows.push_back(std::move(row));
   }
   return rows;

@@ -17,8 +17,7 @@ struct Row {
 };
 
 // The rows of `text`, read from `file`. Throws InputError naming the file
-// and line of an unterminated quote or of a row whose field count differs
-// from the first row's (the header).
+// and line of an unterminated quote.
 std::vector<Row> parse(std::string_view text, const std::filesystem::path& file);
 
 // The whole of `file` (at most `maxBytes`); throws InputError naming it.

@@ -35,6 +35,11 @@ std::vector<csv::Row> readTable(const std::string& text, const std::filesystem::
   if (rows.empty() || rows[0].fields != std::vector<std::string>(columns, columns + N))
     throw InputError::atLine(file, 1, "the header is not the report's (" + expected + ")");
   rows.erase(rows.begin());
+  for (const csv::Row& row : rows)
+    if (row.fields.size() != N)
+      throw InputError::atLine(
+          file, row.line,
+          std::to_string(row.fields.size()) + " fields where the header has " + std::to_string(N));
   return rows;
 }
 

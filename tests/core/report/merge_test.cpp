@@ -143,6 +143,16 @@ TEST(ReportMerge, RefusesADamagedShareNamingTheFileAndLine) {
   test::writeFile(s1 / "report.csv", csv + "b,\"samples,1\n");
   error = mergeError(dir / "merged", {s0, s1});
   EXPECT_NE(error.find("report.csv:6: a quoted field is never closed"), std::string::npos) << error;
+  // A row with a field too many; a file that is not the report's at all.
+  test::writeFile(s1 / "report.csv",
+                  csv + "b,samples,1,bvh,watertight,double,1,1,1,1,1,1,1,x,y,z\n");
+  error = mergeError(dir / "merged", {s0, s1});
+  EXPECT_NE(error.find("report.csv:6: 16 fields where the header has 15"), std::string::npos)
+      << error;
+  test::writeFile(s1 / "report.csv", csv);
+  test::writeFile(s1 / "scenes.csv", std::string("\x89PNG\r\n\x1a\n,\"\"\n", 12));
+  error = mergeError(dir / "merged", {s0, s1});
+  EXPECT_NE(error.find("scenes.csv:1: the header is not the report's"), std::string::npos) << error;
   std::filesystem::remove(s1 / "share.txt");
   error = mergeError(dir / "merged", {s0, s1});
   EXPECT_NE(error.find("share.txt"), std::string::npos) << error;
