@@ -324,7 +324,8 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
     files.back().finish();
   }
   md << "## Stability suite\n\n"
-     << "Per triangle test and precision (tests/core/stability_*_test.cpp): leaks = rays from "
+     << "Per triangle test and precision (tests/core/report/stability_*_test.cpp): leaks = rays "
+        "from "
         "inside a closed 16x16-gridded box aimed exactly at its vertices and edges that hit "
         "nothing; multiple hits = rays that more than one triangle accepts; self re-hits = "
         "spawned shadow and reflection rays hitting the triangle they left (sizes 1e-4 to 1e4 "
