@@ -1,5 +1,6 @@
 // raytrace: render one scene, or every scene in a folder.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "meshtrace/render/layers.h"
 #include "meshtrace/render/render.h"
 #include "meshtrace/report/left_out.h"
+#include "meshtrace/report/merge.h"
 #include "meshtrace/report/report.h"
 #include "meshtrace/report/stability.h"
 
@@ -143,8 +145,12 @@ int main(int argc, char** argv) {
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
   std::string shardOption;
   cli.add_option("--shard", shardOption,
-                 "With --all: render only share I/N of the scenes (those whose index in the "
+                 "With --all or --report: only share I/N of the scenes (those whose index in the "
                  "sorted list is I mod N); default: a Slurm array task's share");
+  std::string mergeDir;
+  cli.add_option("--report-merge", mergeDir,
+                 "Merge the --report folders of every share of a run (given as args) into one "
+                 "report in DIR");
   bool quiet = false;
   cli.add_flag("--quiet", quiet, "No progress line for --all, --report (shown on a terminal)");
   bool printScene = false;
@@ -166,9 +172,25 @@ int main(int argc, char** argv) {
   app::fitWorkersToAddressSpace();
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;
-  if (!shardOption.empty() && !all) {
-    std::fprintf(stderr, "error: --shard works with --all (not yet with --report)\n");
+  if (!shardOption.empty() && !all && reportDir.empty()) {
+    std::fprintf(stderr, "error: --shard works with --all or --report\n");
     return 2;
+  }
+  if (!mergeDir.empty()) {
+    if (args.empty()) {
+      std::fprintf(stderr, "error: --report-merge DIR needs the shares' report folders\n");
+      return 2;
+    }
+    if (!app::reportDestinationUsable(mergeDir)) return 1;
+    try {
+      mergeReports(mergeDir, {args.begin(), args.end()});
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "error: --report-merge: %s\n", e.what());
+      return 1;
+    }
+    std::printf("merged %zu shares into %s/report.md, report.csv and plots\n", args.size(),
+                mergeDir.c_str());
+    return 0;
   }
   if (printScene) {
     if (args.size() != 1) {
@@ -182,9 +204,16 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "error: --report DIR needs at least one SCENE.sce\n");
       return 2;
     }
+    const std::optional<Shard> shard = app::shardToRun(shardOption);
+    if (!shard) return 2;
     if (!app::reportDestinationUsable(reportDir)) return 1;
+    // Sorted, as --all's scenes are: every share deals the same list.
+    std::sort(args.begin(), args.end());
+    const ReportShare share{*shard, {args.begin(), args.end()}};
     std::vector<SceneReport> reports;
-    for (const std::string& file : args) {
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      if (!shard->owns(i)) continue;
+      const std::string& file = args[i];
       MemoryBudget budget(*memoryLimit);
       const auto scene = app::loadAndDescribe(file, budget);
       if (!scene) return 1;
@@ -208,13 +237,19 @@ int main(int argc, char** argv) {
     }
     try {
       withinMemory("write", "the report into " + reportDir, 0, [&] {
-        writeReport(reportDir, reports, stabilityMarkdown(measureStabilityTable(300)));
+        writeReport(reportDir, reports, stabilityMarkdown(measureStabilityTable(300)), share);
       });
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return 1;
     }
-    std::printf("wrote %s/report.md, report.csv and plots\n", reportDir.c_str());
+    if (shard->count > 1)
+      std::printf(
+          "wrote share %s (%zu of %zu scenes) into %s: merge the shares' folders with "
+          "--report-merge\n",
+          shard->text().c_str(), reports.size(), args.size(), reportDir.c_str());
+    else
+      std::printf("wrote %s/report.md, report.csv and plots\n", reportDir.c_str());
     return 0;
   }
   if (all) {
@@ -224,7 +259,7 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path dir = args.size() > 0 ? args[0] : "scenes";
     const std::filesystem::path outDir = args.size() > 1 ? args[1] : "results";
-    const std::optional<app::Shard> shard = app::shardToRun(shardOption);
+    const std::optional<Shard> shard = app::shardToRun(shardOption);
     if (!shard) return 2;
     return app::runOverFolder(
         dir, outDir, "", *memoryLimit, [](const Scene&) { return true; },

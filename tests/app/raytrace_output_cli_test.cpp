@@ -140,7 +140,8 @@ TEST(RaytraceOutput, ReportReplacesEveryFileAndLeavesNoTemporary) {
   const auto r = test::expectSuccess(raytraceTool(), reportArgs(dir, dir / "report"), dir);
   test::expectMentions(r.out, {"wrote", "report.md"});
   EXPECT_EQ(test::listFolder(dir / "report"),
-            (std::vector<std::string>{"plot_tiny.gp", "plot_tiny.png", "report.csv", "report.md"}));
+            (std::vector<std::string>{"plot_tiny.gp", "plot_tiny.png", "report.csv", "report.md",
+                                      "scenes.csv", "share.txt", "stability.md"}));
   EXPECT_EQ(readImage(dir / "report" / "plot_tiny.png").width, 1100);
   test::expectMentions(test::readFileBytes(dir / "report" / "report.md"),
                        {"# Error against run time", "## tiny", "## Stability suite"});

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "viewer/model/camera_control.h"
-#include "viewer/model/reference_lookup.h"
+#include "meshtrace/io/reference_lookup.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -52,12 +53,24 @@ std::string plotScript(const SceneReport& report) {
   std::ostringstream gp;
   // The y range of the first panel: its errors (0 drawn at 0.01) and the
   // JPEG-noise threshold.
-  double low = report.jpegNoiseRmse > 0.0 ? report.jpegNoiseRmse : 1.0, high = low;
+  // The first panel's y axis: an RMSE of 0 (identical to the reference)
+  // has no place on a log axis, so it is drawn a decade below the smallest
+  // error that is not 0, at a tic labelled "0 (exact)"; the axis runs from
+  // there past the largest error and the JPEG-noise threshold, with room
+  // above them for the legend.
+  double smallest = report.jpegNoiseRmse > 0.0 ? report.jpegNoiseRmse : 1.0, high = smallest;
   for (const ReportRow& r : report.rows) {
-    if (r.against != "reference") continue;
-    low = std::min(low, std::max(r.rmse, 0.01));
-    high = std::max(high, std::max(r.rmse, 0.01));
+    if (r.against != "reference" || !(r.rmse > 0.0)) continue;
+    smallest = std::min(smallest, r.rmse);
+    high = std::max(high, r.rmse);
   }
+  const double zero = std::min(0.01, std::pow(10.0, std::floor(std::log10(smallest)) - 1.0));
+  const double bottom = zero / 2, belowKey = high * 2;
+  const double top = belowKey * std::pow(belowKey / bottom, 0.4);
+  std::ostringstream ytics;
+  ytics << "set ytics ('0 (exact)' " << zero;
+  for (double tic = zero * 10; tic <= top; tic *= 10) ytics << ", '" << tic << "' " << tic;
+  ytics << ")\n";
   char jpeg[32];
   std::snprintf(jpeg, sizeof jpeg, "%.3f", report.jpegNoiseRmse);
   // Columns of report.csv: 1 scene, 2 group, 3 config, 8 samples, 9 seconds, 10 rmse.
@@ -69,8 +82,9 @@ std::string plotScript(const SceneReport& report) {
      << "set terminal pngcairo size 1100,480 font 'sans,11'\n"
      << "set output png\n"
      << "scene = " << quotedForGnuplot(scene) << "\n"
-     << "# RMSE 0 (identical to the reference) is drawn at 0.01 on the log axis.\n"
-     << "shown(e) = e > 0.01 ? e : 0.01\n"
+     << "# RMSE 0 (identical to the reference) is drawn at the tic '0 (exact)'.\n"
+     << "zero = " << zero << "\n"
+     << "shown(e) = e > 0 ? e : zero\n"
      << "pick(g, v) = (strcol(1) eq scene && strcol(2) eq g) ? v : NaN\n"
      << "set multiplot layout 1,2 title " << quotedForGnuplot(scene + ": error and run time", true)
      << " font 'sans,13'\n"
@@ -79,11 +93,12 @@ std::string plotScript(const SceneReport& report) {
      << "set xlabel 'run time, whole image on all cores (s)'\n"
      << "set ylabel 'RMSE against the reference (8-bit levels)'\n"
      << "jpeg = " << jpeg << "\n"
-     << "# The errors and the threshold, with room around them.\n"
-     << "set yrange [" << low / 2 << ":" << high * 2 << "]\n"
+     << "# The errors and the threshold, with room around them and the legend above.\n"
+     << "set yrange [" << bottom << ":" << top << "]\n"
+     << ytics.str()
      << "set arrow 1 from graph 0, first jpeg to graph 1, first jpeg nohead dt 2 lw 1.5 lc "
         "'black'\n"
-     << "set label 1 sprintf('JPEG noise: RMSE %.3f', jpeg) at graph 0.02, first jpeg*1.25 "
+     << "set label 1 sprintf('JPEG noise: RMSE %.3f', jpeg) at graph 0.02, first jpeg offset 0,0.6 "
         "font 'sans,9'\n"
      << "plot ";
   bool first = true;
@@ -96,7 +111,7 @@ std::string plotScript(const SceneReport& report) {
      << "set title 'Samples per pixel against a converged render'\n"
      << "set xlabel 'samples per pixel'\n"
      << "set ylabel 'RMSE against the converged render (8-bit levels)'\n"
-     << "set xtics (1, 2, 4, 8, 16, 32, 64, 128, 256)\nset autoscale y\n"
+     << "set xtics (1, 2, 4, 8, 16, 32, 64, 128, 256)\nset autoscale y\nset ytics autofreq\n"
      << "set key top right box opaque width 2 font 'sans,9'\n"
      << "f(x) = a * x**b\na = 1; b = -0.5\n"
      << "set fit quiet nolog\n"

@@ -9,12 +9,14 @@
 #include <system_error>
 
 #include "meshtrace/io/output_file.h"
+#include "meshtrace/io/reference_lookup.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/progressive.h"
 #include "meshtrace/render/surface.h"
 #include "meshtrace/report/image_compare.h"
 #include "meshtrace/report/left_out.h"
 #include "meshtrace/report/plot.h"
+#include "report/report_files.h"
 #include "util/parallel_tiles.h"
 
 namespace meshtrace {
@@ -143,15 +145,11 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) 
 }
 
 std::filesystem::path findReferenceImage(const Scene& scene) {
-  const auto dir = scene.file.parent_path();
-  const std::string stem = scene.file.stem().string();
-  for (const auto& p : {dir / ".." / ".." / "expected_results" / (stem + ".jpg"),
-                        dir / ".." / "expected_results" / (stem + ".png")}) {
-    if (!std::filesystem::is_regular_file(p)) continue;
-    const Image8 ref = readImage(p);
-    if (ref.width == scene.camera.width() && ref.height == scene.camera.height()) return p;
-  }
-  return {};
+  const std::optional<std::filesystem::path> found = findReference(scene.file);
+  if (!found) return {};
+  const Image8 ref = readImage(*found);
+  if (ref.width != scene.camera.width() || ref.height != scene.camera.height()) return {};
+  return *found;
 }
 
 SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& progress) {
@@ -170,15 +168,17 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
   if (!refFile.empty()) {
     reference = readImage(refFile);
     jpegReference = refFile.extension() == ".jpg";
-    report.reference = refFile.filename().string() +
-                       (jpegReference ? " (seed reference, JPEG)" : " (our expected image)");
+    report.reference = refFile.string() + (jpegReference ? " (a stored JPEG: the seed's reference)"
+                                                         : " (a stored render)");
     // The conformance test's bound: our render, JPEG-encoded, within 0.6.
     report.jpegNoiseRmse =
         jpegReference ? 0.6 : compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
   } else {
     ReportConfig high{"reference", "64 samples/pixel", TraceOptions{}, 1, 64};
     reference = quantize(renderConfig(scene, high, threads));
-    report.reference = "our render with 64 samples/pixel (no expected image found)";
+    report.reference =
+        "our render with 64 samples/pixel (no stored image of the scene's size in an "
+        "expected_results/ folder beside the scene's folders)";
     report.jpegNoiseRmse = compareImages(reference, jpegRoundTrip(reference, 95)).rmse;
   }
 
@@ -236,8 +236,8 @@ SceneReport measureScene(const Scene& scene, int threads, const ReportProgress& 
   return report;
 }
 
-void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
-                 const std::string& stability) {
+void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& measured,
+                 const std::string& stability, const ReportShare& share) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)
@@ -246,9 +246,12 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   // Every file goes to a temporary first; none replaces an earlier report's
   // until all are written (the plots first, report.md last).
   std::vector<OutputFile> files;
-  std::ostringstream csv, md;
-  csv << "scene,group,config,accel,triangle,precision,step,samples,seconds,rmse,psnr,"
-         "hit_differs,max_normal_deg,against,reference\n";
+  // The data first; the markdown and the plots are made from it as read
+  // back, so that a report merged from shares' files is this one.
+  const std::string csv = report_files::rowsCsv(measured);
+  const std::string scenesCsv = report_files::scenesCsv(measured);
+  const std::vector<SceneReport> scenes = report_files::parseScenes(scenesCsv, csv, dir);
+  std::ostringstream md;
   md << "# Error against run time\n\n"
      << "Each configuration renders the whole image once on all cores; the time is wall time "
         "(including the BVH build), so it varies with machine load. RMSE and PSNR are against "
@@ -261,10 +264,21 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
      << "Plots (gnuplot, from report.csv; plot_SCENE.gp redraws them): RMSE against run "
         "time per configuration group with the JPEG-noise threshold, and the samples sweep's "
         "RMSE against samples per pixel with its power-law fit, both on log axes.\n\n";
+  if (share.shard.count > 1)
+    md << "This folder holds share " << share.shard.text() << " of a run of " << share.scenes.size()
+       << " scenes; `raytrace --report-merge` joins the shares' folders into one report.\n\n";
+  if (!scenes.empty()) {
+    md << "| scene | scored against | samples sweep against |\n|---|---|---|\n";
+    for (const SceneReport& s : scenes)
+      md << "| " << report_files::sceneName(s) << " | " << s.reference << " | "
+         << (s.converged.empty() ? "-" : s.converged) << " |\n";
+    md << "\n";
+  }
   char buf[512];
   for (const SceneReport& s : scenes) {
-    const std::string name = s.scene.stem().string();
-    md << "## " << name << "\n\nReference: " << s.reference << "; within JPEG noise means RMSE <= "
+    const std::string name = report_files::sceneName(s);
+    md << "## " << name << "\n\nScored against: " << s.reference
+       << "; within JPEG noise means RMSE <= "
        << (std::snprintf(buf, sizeof buf, "%.3f", s.jpegNoiseRmse), buf) << ".\n\n"
        << "| configuration | group | seconds | RMSE | PSNR dB | hit differs | normal deg |\n"
        << "|---|---|---|---|---|---|---|\n";
@@ -275,13 +289,6 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
                     c.name.c_str(), c.group.c_str(), r.seconds, r.rmse, r.psnr,
                     100.0 * r.hitDiffers, r.maxNormalDegrees);
       md << buf;
-      const std::string& against = r.against == "converged" ? s.converged : s.reference;
-      std::snprintf(buf, sizeof buf, "%s,%s,%s,%s,%s,%s,%d,%d,%.6f,%.4f,%.3f,%.6f,%.6g,%s,\"%s\"\n",
-                    name.c_str(), c.group.c_str(), c.name.c_str(), toString(c.trace.accel),
-                    toString(c.trace.triangle.test), toString(c.trace.triangle.precision), c.step,
-                    c.samples, r.seconds, r.rmse, r.psnr, r.hitDiffers, r.maxNormalDegrees,
-                    r.against.c_str(), against.c_str());
-      csv << buf;
       if (r.against == "reference" && r.rmse <= s.jpegNoiseRmse &&
           (!cheapest || r.seconds < cheapest->seconds))
         cheapest = &r;
@@ -310,22 +317,32 @@ void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport
   // The plots, drawn by gnuplot from the finished CSV; their scripts are
   // kept beside it to redraw or edit them.
   for (const SceneReport& s : scenes) {
-    const std::string name = s.scene.stem().string();
+    const std::string name = report_files::sceneName(s);
     files.emplace_back(dir / ("plot_" + name + ".gp")).write(plotScript(s));
     files.back().finish();  // closed now: a report of many scenes holds no descriptors open
-    files.emplace_back(dir / ("plot_" + name + ".png")).write(plotPng(s, csv.str()));
+    files.emplace_back(dir / ("plot_" + name + ".png")).write(plotPng(s, csv));
     files.back().finish();
   }
   md << "## Stability suite\n\n"
-     << "Per triangle test and precision (tests/core/stability_*_test.cpp): leaks = rays from "
+     << "Per triangle test and precision (tests/core/report/stability_*_test.cpp): leaks = rays "
+        "from "
         "inside a closed 16x16-gridded box aimed exactly at its vertices and edges that hit "
         "nothing; multiple hits = rays that more than one triangle accepts; self re-hits = "
         "spawned shadow and reflection rays hitting the triangle they left (sizes 1e-4 to 1e4 "
         "at offsets 0 to 1e6); wrong hit/miss and the error columns are against a "
         "quad-precision reference on grazing, sliver, huge and tiny triangles. Mrays/s is the "
-        "brute-force box test on one core.\n\n"
+        "speed of `raytrace --triangle T --precision P` where it counts: closest hits of the "
+        "primary rays on scenes/knot's knot (106,496 triangles as make_scenes generates it, "
+        "filling a view of 256x256 rays from that scene's eye) through the BVH, one ray at a "
+        "time on one core.\n\n"
      << stability << "\n";
-  files.emplace_back(dir / "report.csv").write(csv.str());
+  ReportShare whole = share;
+  if (whole.scenes.empty())
+    for (const SceneReport& s : scenes) whole.scenes.push_back(s.scene);
+  files.emplace_back(dir / report_files::kStability).write(stability);
+  files.emplace_back(dir / report_files::kShare).write(report_files::shareText(whole));
+  files.emplace_back(dir / report_files::kScenes).write(scenesCsv);
+  files.emplace_back(dir / report_files::kRows).write(csv);
   files.emplace_back(dir / "report.md").write(md.str());
   commitTogether(files);
 }

@@ -18,7 +18,6 @@
 #include "viewer/model/options.h"
 #include "viewer/model/projection.h"
 #include "viewer/model/ray_tree.h"
-#include "viewer/model/reference_lookup.h"
 #include "viewer/model/render_progress.h"
 #include "viewer/model/render_scene.h"
 #include "viewer/model/scene_catalog.h"
@@ -405,16 +404,6 @@ TEST(RenderProgress, TheTimeLeftFollowsThePaceOfTheAntiAliasingPasses) {
   EXPECT_DOUBLE_EQ(*aaTimeLeftMs(s), 2 * 400.0 / 3);
   s.finished = true;
   EXPECT_FALSE(aaTimeLeftMs(s));
-}
-
-TEST(ReferenceLookup, FindsExpectedResultsBesideTheSceneFolders) {
-  const auto dir = test::scratchDir();
-  fs::create_directories(dir / "scenes/demo");
-  fs::create_directories(dir / "expected_results");
-  std::ofstream(dir / "scenes/demo/demo.sce") << "";
-  EXPECT_FALSE(findReference(dir / "scenes/demo/demo.sce"));
-  std::ofstream(dir / "expected_results/demo.jpg") << "x";
-  EXPECT_EQ(findReference(dir / "scenes/demo/demo.sce"), dir / "expected_results/demo.jpg");
 }
 
 TEST(Views, NamesRoundTripAndFalseColoursFollowTheProbe) {

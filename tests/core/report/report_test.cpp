@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "meshtrace/io/scene_parser.h"
 #include "meshtrace/report/stability.h"
 #include "support/paths.h"
 
@@ -78,6 +79,48 @@ TEST(Report, SamplesErrorFallsAgainstAConvergedRender) {
   for (std::size_t i = 1; i < sweep.size(); ++i) EXPECT_LT(sweep[i], sweep[i - 1]) << i;
   EXPECT_LT(r.samplesSlope, -0.3);
   EXPECT_GT(r.samplesSlope, -1.5);
+}
+
+// Our scenes/ are scored against their renders stored in the checkout's
+// expected_results/, not against a 64-sample render of their own.
+TEST(Report, OurScenesAreScoredAgainstTheirStoredRenders) {
+  std::size_t scenes = 0;
+  for (const auto& e :
+       std::filesystem::recursive_directory_iterator(test::sourceDir() / "scenes")) {
+    if (e.path().extension() != ".sce") continue;
+    ++scenes;
+    const Scene scene = loadScene(e.path());
+    EXPECT_EQ(findReferenceImage(scene).lexically_normal(),
+              test::sourceDir() / "expected_results" / (e.path().stem().string() + ".png"))
+        << e.path();
+  }
+  EXPECT_GE(scenes, 6u);
+}
+
+// A stored render is the reference, the report says which file it is, and
+// the exact configuration, which rendered it, matches it exactly.
+TEST(Report, AStoredRenderIsTheReferenceAndTheReportNamesIt) {
+  const auto dir = test::scratchDir();
+  Scene scene = tinyScene();
+  scene.file = dir / "scenes" / "tiny" / "tiny.sce";
+  std::filesystem::create_directories(dir / "expected_results");
+  const auto stored = dir / "expected_results" / "tiny.png";
+  writeImage(quantize(renderConfig(scene, {"progressive", "exact", TraceOptions{}, 1, 1})), stored);
+  const SceneReport r = measureScene(scene, 1);
+  EXPECT_EQ(r.reference.rfind(stored.lexically_normal().string() + " (a stored render)", 0), 0u)
+      << r.reference;
+  bool sawExact = false;
+  for (const ReportRow& row : r.rows)
+    if (row.config.name == "exact (default)") {
+      sawExact = true;
+      EXPECT_EQ(row.rmse, 0.0);
+    }
+  EXPECT_TRUE(sawExact);
+  writeReport(dir / "report", {r}, "stability table");
+  std::ifstream in(dir / "report" / "report.md");
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("Scored against: " + r.reference), std::string::npos) << md;
+  EXPECT_NE(md.find("| tiny | " + r.reference + " |"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "meshtrace/accel/intersector.h"
 #include "meshtrace/io/image.h"
+#include "meshtrace/util/shard.h"
 
 namespace meshtrace {
 
@@ -62,9 +63,9 @@ std::vector<ReportConfig> reportConfigs(const Scene& scene, std::vector<std::str
 // traced pixel over its block; several samples averaged.
 Image renderConfig(const Scene& scene, const ReportConfig& config, int threads = 0);
 
-// The seed's expected image for a scene at <dir>/../../expected_results/<stem>.jpg
-// (the seed layout) or our own at <dir>/../expected_results/<stem>.png, if it
-// exists with the scene's size.
+// The scene's stored reference image (findReference: the seed's
+// expected_results/<stem>.jpg, our expected_results/<stem>.png), if it has
+// the scene's size; empty if not.
 std::filesystem::path findReferenceImage(const Scene& scene);
 
 // Told before each configuration is measured: how many are done, of how
@@ -74,9 +75,20 @@ using ReportProgress =
 
 SceneReport measureScene(const Scene& scene, int threads = 0, const ReportProgress& progress = {});
 
-// Writes report.md, report.csv and plot_<scene>.png into `dir`; `stability`
-// is the markdown table of stability.h, included verbatim.
+// Which share of a run a report holds (raytrace --report --shard I/N):
+// the scenes whose index in `scenes`, every scene of the run sorted, is
+// shard.index modulo shard.count.
+struct ReportShare {
+  Shard shard;
+  std::vector<std::filesystem::path> scenes;
+};
+
+// Writes report.md, report.csv and plot_<scene>.png into `dir`, with the
+// data the report is made from (scenes.csv, stability.md, share.txt) for
+// mergeReports; `stability` is the markdown table of stability.h, included
+// verbatim. Without a share's scenes, the report is the whole run of
+// `scenes`. The files replace the folder's old ones together or not at all.
 void writeReport(const std::filesystem::path& dir, const std::vector<SceneReport>& scenes,
-                 const std::string& stability);
+                 const std::string& stability, const ReportShare& share = {});
 
 }  // namespace meshtrace

@@ -9,7 +9,9 @@
 
 #include "meshtrace/geometry/hit.h"
 #include "meshtrace/geometry/mesh.h"
+#include "meshtrace/geometry/scene.h"
 #include "meshtrace/geometry/triangle.h"
+#include "meshtrace/util/counters.h"
 
 namespace meshtrace {
 
@@ -58,12 +60,28 @@ struct AccuracyResult {
 AccuracyResult measureAccuracy(IllConditioned family, TriangleKernel kernel, int samples,
                                std::uint64_t seed);
 
+// Speed where a reader meets a triangle test: the closest hits of primary
+// rays on scenes/knot's knot (106,496 triangles, generated as make_scenes
+// writes it), seen from that scene's eye with the knot filling a view of
+// 256x256 rays, through the BVH, on one core, one ray at a time; the
+// fastest of several passes.
+struct ThroughputResult {
+  std::size_t rays = 0, hits = 0, triangles = 0;
+  Counters counters;     // what the queries did: node visits, triangle tests
+  double seconds = 0.0;  // the queries of one pass alone, not the BVH's build
+  double mraysPerSecond() const { return seconds > 0.0 ? rays / seconds * 1e-6 : 0.0; }
+};
+// The knot as a scene of its own, to build once and measure every test on.
+Scene knotThroughputScene();
+ThroughputResult measureThroughput(const Scene& knot, TriangleKernel kernel);
+
 // The table for the report: one row per algorithm and precision.
 struct StabilityRow {
   TriangleKernel kernel;
   WatertightResult watertight;  // n = 16 box, off-centre eye
   SelfHitResult selfHits;       // triangles, all scales and offsets
   AccuracyResult accuracy;      // all four families together
+  ThroughputResult throughput;  // the knot through the BVH
 };
 std::vector<StabilityRow> measureStabilityTable(int samplesPerCase);
 std::string stabilityMarkdown(const std::vector<StabilityRow>& rows);

@@ -1,6 +1,6 @@
-#include "viewer/model/reference_lookup.h"
+#include "meshtrace/io/reference_lookup.h"
 
-namespace meshtrace::viewer {
+namespace meshtrace {
 
 std::optional<std::filesystem::path> findReference(const std::filesystem::path& scene) {
   const std::string stem = scene.stem().string();
@@ -16,4 +16,4 @@ std::optional<std::filesystem::path> findReference(const std::filesystem::path& 
   return std::nullopt;
 }
 
-}  // namespace meshtrace::viewer
+}  // namespace meshtrace
