@@ -1,5 +1,6 @@
 #include "common/batch.h"
 
+#include <malloc.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -66,9 +67,17 @@ void fitWorkersToAddressSpace() {
   // management, which aborts if it cannot make a thread.
   static const tbb::global_control* threads = nullptr;
   const int workers = workerThreadsTheAddressSpaceAllows();
-  if (workers >= 0 && !threads)
+  if (workers >= 0 && !threads) {
     threads = new tbb::global_control(tbb::global_control::max_allowed_parallelism,
                                       static_cast<std::size_t>(workers) + 1);
+    // One malloc arena for every thread. A thread's first allocation
+    // otherwise reserves an arena of its own (64 MiB of address space)
+    // whenever the limit leaves room for it, and whether a worker allocates
+    // before the main thread's plan is spent depends on scheduling: the
+    // same run could then end in a refused allocation the plan did not
+    // foresee, instead of rendering or being refused by the plan.
+    mallopt(M_ARENA_MAX, 1);
+  }
 }
 
 std::optional<std::uint64_t> memoryLimit(const std::string& option) {

@@ -20,9 +20,9 @@ namespace {
 // by default.
 constexpr double kDefaultShare = 0.75;
 // The address space each worker thread takes besides what the plan counts:
-// its stack (8 MiB by default) and some room for its allocations. (Its
-// malloc arena reserves 64 MiB more where the address space allows; where
-// it does not, the thread allocates from the main arena instead.)
+// its stack (8 MiB by default) and some room for its allocations. (Under
+// an address-space limit the tools keep every thread in the main malloc
+// arena: see app::fitWorkersToAddressSpace.)
 constexpr std::uint64_t kAddressSpacePerThread = std::uint64_t{16} << 20;
 
 std::uint64_t addressSpaceInUse() {
