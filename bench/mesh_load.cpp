@@ -4,44 +4,19 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "formats/openmesh_reader.h"
 #include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/mesh_writer.h"
 #include "meshtrace/io/off_reader.h"
-#include "meshtrace/io/output_file.h"
 
 namespace meshtrace::bench {
 
 namespace {
 constexpr int kRounds = 5;
-
-template <typename T>
-void append(std::string& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-// Float coordinates and int indices, as scanners and exporters write them.
-void writeBinaryPly(const MeshData& mesh, const std::filesystem::path& ply) {
-  std::string out = "ply\nformat binary_little_endian 1.0\nelement vertex " +
-                    std::to_string(mesh.vertices.size()) +
-                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
-                    std::to_string(mesh.triangles.size()) +
-                    "\nproperty list uchar int vertex_indices\nend_header\n";
-  out.reserve(out.size() + mesh.vertices.size() * 12 + mesh.triangles.size() * 13);
-  for (const Vec3& v : mesh.vertices)
-    for (int k = 0; k < 3; ++k) append(out, static_cast<float>(v[k]));
-  for (const TriangleIndices& t : mesh.triangles) {
-    append(out, std::uint8_t{3});
-    for (std::uint32_t i : t) append(out, static_cast<std::int32_t>(i));
-  }
-  writeFileAtomically(ply, out);
-}
 
 // The time `read` takes to load `file`, checked for the triangles expected.
 double loadMs(const std::filesystem::path& file, std::size_t expectedTriangles,
@@ -68,7 +43,8 @@ void printMeshLoadTimes(const std::filesystem::path& off) {
   const MeshData mesh = readOff(off);
   auto ply = off;
   ply.replace_extension(".ply");
-  if (!std::filesystem::exists(ply)) writeBinaryPly(mesh, ply);
+  // Float coordinates, as scanners and exporters write them.
+  if (!std::filesystem::exists(ply)) writeBinaryPly(mesh, ply, PlyCoordinates::Float);
   std::vector<double> offMs, plyMs, openMeshMs;
   for (int round = 0; round < kRounds; ++round) {  // interleaved: all see the same load
     offMs.push_back(loadMs(off, mesh.triangles.size()));

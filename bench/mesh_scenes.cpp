@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/io/mesh_writer.h"
 #include "meshtrace/io/off_reader.h"
 
 namespace meshtrace::bench {

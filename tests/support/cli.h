@@ -13,6 +13,7 @@ namespace meshtrace::test {
 
 inline std::filesystem::path raytraceTool() { return MESHTRACE_RAYTRACE; }
 inline std::filesystem::path debugAabbTool() { return MESHTRACE_DEBUG_AABB; }
+inline std::filesystem::path makeScenesTool() { return MESHTRACE_MAKE_SCENES; }
 
 // What an existing output file holds before a run that must not touch it.
 inline const std::string kOldOutput = "previous output, must survive a failed run";

@@ -1,10 +1,7 @@
 #include "meshtrace/geometry/mesh_generators.h"
 
-#include <charconv>
-#include <fstream>
 #include <glm/gtc/constants.hpp>
 #include <map>
-#include <stdexcept>
 #include <utility>
 
 namespace meshtrace {
@@ -142,24 +139,6 @@ MeshData makeGriddedBox(const Vec3& min, const Vec3& max, int n) {
 
 void reverseWinding(MeshData& mesh) {
   for (TriangleIndices& t : mesh.triangles) std::swap(t[1], t[2]);
-}
-
-void writeOff(const MeshData& mesh, const std::filesystem::path& path) {
-  std::string out = "OFF\n" + std::to_string(mesh.vertices.size()) + " " +
-                    std::to_string(mesh.triangles.size()) + " 0\n";
-  char buf[32];
-  for (const Vec3& v : mesh.vertices) {
-    for (int k = 0; k < 3; ++k) {
-      const auto res = std::to_chars(buf, buf + sizeof buf, v[k]);  // shortest exact form
-      out.append(buf, res.ptr);
-      out += k < 2 ? ' ' : '\n';
-    }
-  }
-  for (const auto& [a, b, c] : mesh.triangles)
-    out += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
-  std::ofstream file(path, std::ios::binary);
-  file.write(out.data(), static_cast<std::streamsize>(out.size()));
-  if (!file.flush()) throw std::runtime_error(path.string() + ": cannot write the OFF file");
 }
 
 }  // namespace meshtrace

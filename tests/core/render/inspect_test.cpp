@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/io/mesh_writer.h"
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/inspect_colors.h"
 #include "meshtrace/render/integrator.h"

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "meshtrace/geometry/mesh_generators.h"
+#include "meshtrace/io/mesh_writer.h"
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/progressive.h"
 #include "support/files.h"

@@ -1,8 +1,6 @@
 #pragma once
 // Procedural meshes for our scenes, tests and benchmarks. Every generator is
 // deterministic and outward-facing (counter-clockwise seen from outside).
-#include <filesystem>
-
 #include "meshtrace/geometry/mesh.h"
 
 namespace meshtrace {
@@ -48,9 +46,5 @@ void appendMesh(MeshData& mesh, const MeshData& part);
 
 // Turns every triangle to face the other way (e.g. a box seen from inside).
 void reverseWinding(MeshData& mesh);
-
-// Writes OFF text whose coordinates read back exactly (shortest round-trip
-// form). Throws std::runtime_error naming the path on failure.
-void writeOff(const MeshData& mesh, const std::filesystem::path& path);
 
 }  // namespace meshtrace
