@@ -28,7 +28,8 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
   std::string size, view = "color", overlay = "none", pin, zoom = "fit", accel = "bvh",
                     triangle = "watertight", precision = "double";
   std::vector<std::string> shading;
-  cli.add_option("scene", o.scene, "Scene to open (.sce)");
+  cli.add_option("scene", o.scene,
+                 "Scene to open (.sce), or a mesh file, framed as raytrace frames it");
   cli.add_flag("--headless", o.headless, "Render the window offscreen through OSMesa (no display)");
   cli.add_option("--snapshot", o.snapshot,
                  "Headless: write the whole window to this PNG once the render is done");

@@ -88,10 +88,12 @@ void proposeSavePaths(ViewerState& state, const fs::path& scene) {
   state.screenshotPath = freeName(here, stem + "-window", ".png").string();
   // The scene beside its original when that folder is the user's own, so
   // that its meshes' relative paths still hold; named there as the scene
-  // was (the message after saving gives the full path).
+  // was (the message after saving gives the full path). The scene made for
+  // a bare mesh is proposed as <stem>.sce, the name raytrace gives it.
   candidates.insert(candidates.begin(), scene.parent_path());
   const fs::path folder = chooseSaveFolder(candidates, fs::temp_directory_path());
-  const fs::path name = freeName(folder, stem + "-modes", ".sce").filename();
+  const fs::path name =
+      freeName(folder, isBareMesh(scene) ? stem : stem + "-modes", ".sce").filename();
   state.sceneSavePath =
       (folder == absoluteOf(scene.parent_path().string()) ? scene.parent_path() / name
                                                           : folder / name)
