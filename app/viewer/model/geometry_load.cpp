@@ -4,12 +4,24 @@
 #include <fstream>
 #include <sstream>
 
+#include "meshtrace/io/mesh_reader.h"
+#include "meshtrace/io/mesh_scene.h"
 #include "meshtrace/io/scene_parser.h"
 #include "viewer/model/scene_writer.h"
 
 namespace meshtrace::viewer {
 
 namespace {
+// The mesh entities' modes of `text`, when this reader can tell them.
+bool readModes(const std::string& text, std::vector<Shading>& modes) {
+  try {
+    modes = meshModes(text);
+  } catch (const std::runtime_error&) {
+    return false;
+  }
+  return true;
+}
+
 // Larger scene files are left to loadScene, which knows its limits.
 constexpr std::uintmax_t kMaxStagedBytes = std::uintmax_t{16} << 20;
 
@@ -26,26 +38,36 @@ bool readStaged(const std::filesystem::path& file, std::string& text, std::vecto
   buffer << in.rdbuf();
   text = buffer.str();
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) return false;
-  try {
-    modes = meshModes(text);
-  } catch (const std::runtime_error&) {
-    return false;
-  }
-  return true;
+  return readModes(text, modes);
 }
 }  // namespace
+
+bool isBareMesh(const std::filesystem::path& file) {
+  return isMeshFile(file) && !isSceneFile(file);
+}
 
 LoadedScene loadGeometry(const std::filesystem::path& file) {
   const auto start = std::chrono::steady_clock::now();
   LoadedScene out;
   std::string text;
-  if (readStaged(file, text, out.fileModes)) {
+  // A bare mesh is read as the scene raytrace makes for it, as if that
+  // scene were saved beside the mesh.
+  std::filesystem::path sceneFile = file;
+  if (isBareMesh(file)) {
+    MemoryBudget budget(defaultMemoryLimit());
+    out.generatedText = meshSceneText(file, budget);
+    text = out.generatedText;
+    sceneFile = meshScenePath(file);
+  }
+  if (!out.generatedText.empty() ? readModes(text, out.fileModes)
+                                 : readStaged(file, text, out.fileModes)) {
     // The shading words rewritten in place: lines, and so the messages of
     // bad input, stay those of the file.
     const std::vector<Shading> flat(out.fileModes.size(), Shading::Flat);
     const std::vector<bool> visible(flat.size(), true);
     out.scene = std::make_shared<const Scene>(parseScene(
-        rewriteMeshes(text, flat, visible, file.parent_path(), file.parent_path()), file));
+        rewriteMeshes(text, flat, visible, sceneFile.parent_path(), sceneFile.parent_path()),
+        sceneFile));
   } else {
     auto scene = std::make_shared<Scene>(loadScene(file));
     out.fileModes.clear();

@@ -28,11 +28,13 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
   std::string size, view = "color", overlay = "none", pin, zoom = "fit", accel = "bvh",
                     triangle = "watertight", precision = "double";
   std::vector<std::string> shading;
-  cli.add_option("scene", o.scene, "Scene to open (.sce)");
+  cli.add_option("scene", o.scene,
+                 "Scene to open (.sce), or a mesh file, framed as raytrace frames it");
   cli.add_flag("--headless", o.headless, "Render the window offscreen through OSMesa (no display)");
   cli.add_option("--snapshot", o.snapshot,
                  "Headless: write the whole window to this PNG once the render is done");
-  cli.add_option("--size", size, "Window size WxH (default 1280x800)");
+  cli.add_option("--size", size,
+                 "Window size WxH (default 1280x800, made smaller to fit the screen)");
   cli.add_option(
       "--view", view,
       "color, normals, depth, object, triangle, boxes, cost, deviation, side-by-side, difference");
@@ -115,7 +117,8 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
     exitCode = 2;
     return std::nullopt;
   };
-  if (!size.empty() && std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2)
+  o.sizeGiven = !size.empty();
+  if (o.sizeGiven && std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2)
     return fail("--size expects WxH, got '" + size + "'");
   if (o.width < 320 || o.height < 240 || o.width > 8192 || o.height > 8192)
     return fail("--size must be between 320x240 and 8192x8192");

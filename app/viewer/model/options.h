@@ -27,8 +27,11 @@ struct DrawOptions {
 struct ViewerOptions {
   std::string scene;  // optional .sce to open
   bool headless = false;
-  std::string snapshot;            // PNG of the whole window (headless)
-  int width = 1280, height = 800;  // window size
+  std::string snapshot;  // PNG of the whole window (headless)
+  // The window's size: exactly this with --size (sizeGiven), else at most
+  // this, fitted to the screen (window_fit.h); headless, always this.
+  int width = 1280, height = 800;
+  bool sizeGiven = false;
   View view = View::Color;
   Overlay overlay = Overlay::None;
   double overlayOpacity = 0.6;

@@ -152,13 +152,22 @@ void saveSceneWithMeshes(const std::filesystem::path& scene, const std::filesyst
   if (!in) throw std::runtime_error("cannot read " + scene.string());
   std::stringstream buffer;
   buffer << in.rdbuf();
-  std::string text;
+  saveSceneTextWithMeshes(buffer.str(), scene.string(), scene.parent_path(), out, modes, visible,
+                          existing);
+}
+
+void saveSceneTextWithMeshes(std::string_view text, const std::string& source,
+                             const std::filesystem::path& from, const std::filesystem::path& out,
+                             const std::vector<Shading>& modes, const std::vector<bool>& visible,
+                             Existing existing) {
+  refuseExisting(out, existing);
+  std::string rewritten;
   try {
-    text = rewriteMeshes(buffer.str(), modes, visible, scene.parent_path(), out.parent_path());
+    rewritten = rewriteMeshes(text, modes, visible, from, out.parent_path());
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error(scene.string() + ": " + e.what());
+    throw std::runtime_error(source + ": " + e.what());
   }
-  writeFileAtomically(out, text);
+  writeFileAtomically(out, rewritten);
 }
 
 }  // namespace meshtrace::viewer

@@ -36,4 +36,12 @@ void saveSceneWithMeshes(const std::filesystem::path& scene, const std::filesyst
                          const std::vector<Shading>& modes, const std::vector<bool>& visible,
                          Existing existing);
 
+// The same for scene text not read from a file (the scene made for a bare
+// mesh): its relative mesh paths lead from folder `from`, and its errors
+// are said to be of `source`.
+void saveSceneTextWithMeshes(std::string_view text, const std::string& source,
+                             const std::filesystem::path& from, const std::filesystem::path& out,
+                             const std::vector<Shading>& modes, const std::vector<bool>& visible,
+                             Existing existing);
+
 }  // namespace meshtrace::viewer

@@ -23,6 +23,7 @@ void SceneSession::adopt(const LoadedScene& loaded) {
   base_ = loaded.scene;
   warnings_ = base_->warnings;
   loadMs_ = loaded.ms;
+  generatedText_ = loaded.generatedText;
   meshes_.clear();
   std::map<std::string, int> seen;
   for (std::size_t i = 0; i < base_->meshes.size(); ++i) {
@@ -76,6 +77,7 @@ void SceneSession::clear() {
   base_.reset();
   meshes_.clear();
   warnings_.clear();
+  generatedText_.clear();
   loadMs_ = 0.0;
   ++meshRevision_;
 }
@@ -114,7 +116,11 @@ bool SceneSession::meshesChanged() const {
 void SceneSession::saveMeshes(const std::filesystem::path& out, Existing existing) const {
   std::vector<bool> visible;
   for (const MeshState& m : meshes_) visible.push_back(m.visible);
-  saveSceneWithMeshes(file_, out, shadingModes(), visible, existing);
+  if (generated())
+    saveSceneTextWithMeshes(generatedText_, "the scene made for " + file_.string(),
+                            file_.parent_path(), out, shadingModes(), visible, existing);
+  else
+    saveSceneWithMeshes(file_, out, shadingModes(), visible, existing);
 }
 
 void SceneSession::resetCamera() {

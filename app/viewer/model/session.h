@@ -50,6 +50,9 @@ class SceneSession {
   bool loaded() const { return base_ != nullptr; }
   const std::string& error() const { return error_; }
   const std::filesystem::path& file() const { return file_; }
+  // Whether the file is a bare mesh shown in the scene made for it
+  // (geometry_load.h), which saveMeshes writes out.
+  bool generated() const { return !generatedText_.empty(); }
   double loadMs() const { return loadMs_; }
   // The scene as loaded: geometry, materials, lights. Its meshes' modes are
   // not the current ones (see meshes()).
@@ -62,8 +65,9 @@ class SceneSession {
   void resetMeshes();
   std::vector<Shading> shadingModes() const;
   bool meshesChanged() const;
-  // Saves the scene file with the current shading modes, hidden meshes
-  // commented out (scene_writer.h); throws FileExists, std::runtime_error.
+  // Saves the scene file (for a bare mesh, the scene made for it) with the
+  // current shading modes, hidden meshes commented out (scene_writer.h);
+  // throws FileExists, std::runtime_error.
   void saveMeshes(const std::filesystem::path& out, Existing existing) const;
 
   const CameraSpec& camera() const { return camera_; }
@@ -88,6 +92,7 @@ class SceneSession {
   std::shared_ptr<const Scene> base_;
   std::vector<MeshState> meshes_;
   std::vector<std::string> warnings_;
+  std::string generatedText_;
   CameraSpec camera_;
   std::uint64_t meshRevision_ = 0;
 };

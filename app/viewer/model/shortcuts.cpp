@@ -10,6 +10,7 @@ std::vector<Shortcut> makeTable() {
       {"File", "Open a scene or folder...", Command::Open, {{"O", true}}},
       {"File", "Reload the scene", Command::Reload, {{"F5"}, {"R", true}}},
       {"File", "Save the render", Command::SaveRender, {{"S", true}}},
+      {"File", "Save layers (EXR)", Command::SaveLayers, {{"E", true}}},
       {"File", "Save the scene", Command::SaveScene, {{"S", true, true}}},
       {"File", "Save the window", Command::SaveWindow, {{"F12"}}},
       {"File", "Quit", Command::Quit, {{"Q", true}}},

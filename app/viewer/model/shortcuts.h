@@ -10,6 +10,7 @@ enum class Command {
   Open,
   Reload,
   SaveRender,
+  SaveLayers,  // the render's layers as one EXR file (render/layers.h)
   SaveScene,
   SaveWindow,
   Quit,

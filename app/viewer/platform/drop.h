@@ -1,7 +1,7 @@
 #pragma once
 // Files dropped on the window: GLFW hands over C strings; the app opens
-// each path in turn (a .sce opens, a folder joins the list, anything else
-// is refused with a message).
+// each path in turn (a .sce or a bare mesh opens, a folder joins the list,
+// anything else is refused with a message).
 #include "viewer/ui/viewer_app.h"
 
 namespace meshtrace::viewer {

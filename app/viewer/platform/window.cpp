@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "viewer/gl/gl_api.h"
+#include "viewer/model/window_fit.h"
 #include "viewer/platform/drop.h"
 #include "viewer/platform/frame_loop.h"
 #include "viewer/platform/run.h"
@@ -29,6 +30,37 @@ void onKey(GLFWwindow*, int key, int, int action, int mods) {
 }
 
 void* loadProc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+
+// The primary monitor's work area; its whole video mode if the system
+// gives no work area; empty if there is no monitor.
+ScreenArea workArea() {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!monitor) return {};
+  ScreenArea area;
+  glfwGetMonitorWorkarea(monitor, &area.x, &area.y, &area.width, &area.height);
+  if (area.width > 0 && area.height > 0) return area;
+  const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+  if (!mode) return {};
+  glfwGetMonitorPos(monitor, &area.x, &area.y);
+  return {area.x, area.y, mode->width, mode->height};
+}
+
+// The window made smaller and moved to fit the work area, once its frame
+// is known; moved only if it did not fit as it was.
+void fitToWorkArea(GLFWwindow* window, const ScreenArea& area, int width, int height) {
+  WindowFrame frame;
+  glfwGetWindowFrameSize(window, &frame.left, &frame.top, &frame.right, &frame.bottom);
+  const ScreenArea fitted = fitWindow(width, height, area, frame);
+  int x, y, w, h;
+  glfwGetWindowPos(window, &x, &y);
+  glfwGetWindowSize(window, &w, &h);
+  if (w != fitted.width || h != fitted.height)
+    glfwSetWindowSize(window, fitted.width, fitted.height);
+  const bool outside = x - frame.left < area.x || y - frame.top < area.y ||
+                       x + fitted.width + frame.right > area.x + area.width ||
+                       y + fitted.height + frame.bottom > area.y + area.height;
+  if (area.width > 0 && outside) glfwSetWindowPos(window, fitted.x, fitted.y);
+}
 }  // namespace
 
 int runWindow(const ViewerOptions& options, const std::filesystem::path& executable) {
@@ -41,12 +73,16 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  // --size is taken as given; the default size is fitted to the screen.
+  const ScreenArea area = options.sizeGiven ? ScreenArea{} : workArea();
+  const ScreenArea first = fitWindow(options.width, options.height, area, {});
   GLFWwindow* window =
-      glfwCreateWindow(options.width, options.height, "meshtrace viewer", nullptr, nullptr);
+      glfwCreateWindow(first.width, first.height, "meshtrace viewer", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     return 1;
   }
+  if (!options.sizeGiven) fitToWorkArea(window, area, options.width, options.height);
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
   if (const char* missing = gl::loadFunctions(&loadProc)) {

@@ -91,10 +91,10 @@ void openPath(ViewerState& state, const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     addFolder(state, path, path.filename().string());
-  } else if (path.extension() == ".sce") {
+  } else if (path.extension() == ".sce" || isBareMesh(path)) {
     openScene(state, path);
   } else {
-    setMessage(state, "not a .sce file or a folder: " + path.string(), true);
+    setMessage(state, "not a .sce file, a mesh file or a folder: " + path.string(), true);
   }
 }
 

@@ -56,10 +56,13 @@ bool runCommand(ViewerState& state, RenderDisplay& display, const Shortcut& shor
       return true;
     case Command::Reload: reloadScene(state); return true;
     case Command::SaveRender:
+    case Command::SaveLayers:
       if (display.frame().width == 0)
         setMessage(state, "no render to save yet", true);
       else
-        save(state, display, SaveKind::Render, Existing::Refuse);
+        save(state, display,
+             shortcut.command == Command::SaveRender ? SaveKind::Render : SaveKind::Layers,
+             Existing::Refuse);
       return true;
     case Command::SaveScene:
       if (!state.session.loaded())

@@ -255,7 +255,8 @@ void drawImageView(ViewerState& state, RenderDisplay& display) {
       ImGui::TextWrapped("%s", state.session.error().c_str());
       ImGui::PopStyleColor();
     } else {
-      ImGui::TextDisabled("Open a scene from the list, type a path, or drop a .sce file here.");
+      ImGui::TextDisabled(
+          "Open a scene from the list, type a path, or drop a .sce or mesh file here.");
     }
     return;
   }

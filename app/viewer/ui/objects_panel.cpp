@@ -2,11 +2,48 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+
+#include "viewer/model/line_breaks.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
 
 namespace {
+constexpr float kShadingButtonWidth = 56;
+
+float textWidth(const std::string& s) { return ImGui::CalcTextSize(s.c_str()).x; }
+
+std::string countsText(const MeshState& m) {
+  return std::to_string(m.triangles) + " / " + std::to_string(m.vertices);
+}
+
+// Whether the counts have a column of their own: only where it leaves the
+// names their width, or eight letters' of a longer name; else the counts
+// go under each name.
+bool countsColumnFits(const SceneSession& session) {
+  float counts = textWidth("tris / verts"), names = 0;
+  for (const MeshState& m : session.meshes()) {
+    counts = std::max(counts, textWidth(countsText(m)));
+    names = std::max(names, textWidth(m.name));
+  }
+  const float fixed = ImGui::GetFrameHeight() + kShadingButtonWidth + counts +
+                      8 * ImGui::GetStyle().CellPadding.x + std::min(names, textWidth("mmmmmmmm"));
+  return ImGui::GetContentRegionAvail().x >= fixed;
+}
+
+// The mesh's name in its cell, cut short with "..." where the cell is too
+// narrow, whole in a tooltip with its counts.
+void drawName(const MeshState& m, bool countsBelow) {
+  const std::string counts = countsText(m) + " tris / verts";
+  ImGui::TextUnformatted(elide(m.name, ImGui::GetContentRegionAvail().x, textWidth).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", m.name.c_str(), counts.c_str());
+  if (!countsBelow) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  textFields({std::to_string(m.triangles) + " tris", std::to_string(m.vertices) + " verts"}, ", ");
+  ImGui::PopStyleColor();
+}
+
 void drawObjects(ViewerState& state, RenderDisplay& display) {
   SceneSession& session = state.session;
   if (!session.loaded()) {
@@ -15,18 +52,24 @@ void drawObjects(ViewerState& state, RenderDisplay& display) {
   }
   {
     const Scene& scene = session.scene();
-    ImGui::Text("%zu spheres, %zu planes, %zu cylinders, %zu lights", scene.spheres.size(),
-                scene.planes.size(), scene.cylinders.size(), scene.lights.size());
+    textFields({std::to_string(scene.spheres.size()) + " spheres",
+                std::to_string(scene.planes.size()) + " planes",
+                std::to_string(scene.cylinders.size()) + " cylinders",
+                std::to_string(scene.lights.size()) + " lights"},
+               ", ");
   }
   if (session.meshes().empty()) {
     ImGui::TextDisabled("No meshes.");
     return;
   }
-  if (ImGui::BeginTable("meshes", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-    ImGui::TableSetupColumn("show");
+  const bool countsColumn = countsColumnFits(session);
+  if (ImGui::BeginTable("meshes", countsColumn ? 4 : 3,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    // The headers name the columns only where they are not cut short.
+    ImGui::TableSetupColumn(countsColumn ? "show" : "");
     ImGui::TableSetupColumn("mesh", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableSetupColumn("shading");
-    ImGui::TableSetupColumn("tris / verts");
+    if (countsColumn) ImGui::TableSetupColumn("tris / verts");
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < session.meshes().size(); ++i) {
       const MeshState& m = session.meshes()[i];
@@ -36,16 +79,18 @@ void drawObjects(ViewerState& state, RenderDisplay& display) {
       bool visible = m.visible;
       if (ImGui::Checkbox("##visible", &visible)) session.setVisible(i, visible);
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(m.name.c_str());
+      drawName(m, !countsColumn);
       ImGui::TableNextColumn();
       // One button toggles FLAT and PHONG; a changed mode is highlighted.
       const bool changed = m.shading != m.fileShading;
       if (changed) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.6f, 0.35f, 0.1f, 1.0f));
-      if (ImGui::Button(toString(m.shading), ImVec2(56, 0)))
+      if (ImGui::Button(toString(m.shading), ImVec2(kShadingButtonWidth, 0)))
         session.setShading(i, m.shading == Shading::Flat ? Shading::Phong : Shading::Flat);
       if (changed) ImGui::PopStyleColor();
-      ImGui::TableNextColumn();
-      ImGui::Text("%zu / %zu", m.triangles, m.vertices);
+      if (countsColumn) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(countsText(m).c_str());
+      }
       ImGui::PopID();
     }
     ImGui::EndTable();

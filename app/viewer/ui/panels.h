@@ -53,6 +53,11 @@ void beginCapture(ViewerState& state);
 void endCapture(ViewerState& state);
 void drawCapturedAs(ViewerState& state, const std::string& text, const std::function<void()>& draw);
 
+// Fields of one line of text ("exact 184.5 ms"), joined by `separator`,
+// broken between fields where the panel is too narrow for all of them,
+// never inside one (field_lines.cpp).
+void textFields(const std::vector<std::string>& fields, const std::string& separator = "  ");
+
 // A bar under a scrolling pane `shown` pixels high that drags its height
 // into `chosen`, marking the settings changed (pane_splitter.cpp); a double
 // click sets `chosen` to 0: the automatic height (pane_heights.h).

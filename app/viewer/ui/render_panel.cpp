@@ -57,21 +57,21 @@ void drawRenderPanel(ViewerState& state, RenderDisplay& display) {
     const std::uint64_t rays =
         s.counters.primaryRays + s.counters.shadowRays + s.counters.reflectionRays;
     const double seconds = s.elapsedMs / 1000.0;
-    ImGui::Text("elapsed %s", ms(state, s.elapsedMs).c_str());
-    ImGui::SameLine();
-    if (state.options.hideTimings)
-      ImGui::Text("  rays/s -");
-    else
-      ImGui::Text("  %.2f M rays/s", seconds > 0 ? rays / seconds / 1e6 : 0.0);
+    char raysPerSecond[64] = "rays/s -";
+    if (!state.options.hideTimings)
+      std::snprintf(raysPerSecond, sizeof raysPerSecond, "%.2f M rays/s",
+                    seconds > 0 ? rays / seconds / 1e6 : 0.0);
+    textFields({"elapsed " + ms(state, s.elapsedMs), raysPerSecond});
     // Shown times count from the user's action (opening the scene, a
     // change), not from the render's start: what the user waits.
     const ShownTimes& shown = display.shownTimes();
-    ImGui::Text("load %s  first image %s  exact %s", ms(state, state.timing.loadMs).c_str(),
-                ms(state, shown.firstImageMs).c_str(), ms(state, shown.exactImageMs).c_str());
+    textFields({"load " + ms(state, state.timing.loadMs),
+                "first image " + ms(state, shown.firstImageMs),
+                "exact " + ms(state, shown.exactImageMs)});
     const FrameStats& frames = state.timing.renderingFrames;
-    ImGui::Text("%d threads  %llu rays", display.threads(), static_cast<unsigned long long>(rays));
-    ImGui::Text("frames while rendering: longest %s  99%% %s", ms(state, frames.longest()).c_str(),
-                ms(state, frames.percentile(99.0)).c_str());
+    textFields({std::to_string(display.threads()) + " threads", std::to_string(rays) + " rays"});
+    textFields({"frames while rendering:", "longest " + ms(state, frames.longest()),
+                "99% " + ms(state, frames.percentile(99.0))});
   }
   ImGui::SetNextItemWidth(200);
   if (ImGui::BeginCombo("view", label(state.view))) {

@@ -1,4 +1,5 @@
-// Saving the render as PNG and the whole window as a screenshot.
+// Saving the render as PNG (or EXR, by the name's extension), its layers
+// as EXR, and the whole window as a screenshot.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -13,6 +14,14 @@ void drawSavePanel(ViewerState& state, RenderDisplay& display) {
   ImGui::BeginDisabled(display.frame().width == 0);
   if (ImGui::Button("Save render")) save(state, display, SaveKind::Render, Existing::Refuse);
   ImGui::EndDisabled();
+  ImGui::SetNextItemWidth(-130);
+  ImGui::InputText("##layers", &state.layersPath);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(display.frame().width == 0);
+  if (ImGui::Button("Save layers")) save(state, display, SaveKind::Layers, Existing::Refuse);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("One EXR of the colour, depth, normals, hit points, ids and cost.");
   ImGui::SetNextItemWidth(-130);
   ImGui::InputText("##window", &state.screenshotPath);
   ImGui::SameLine();

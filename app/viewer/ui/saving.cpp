@@ -3,6 +3,8 @@
 // wrote.
 #include <imgui.h>
 
+#include "meshtrace/io/exr.h"
+#include "meshtrace/render/layers.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -28,19 +30,44 @@ void rescanFor(ViewerState& state, const fs::path& saved) {
   }
   if (!listed) addFolder(state, saved.parent_path(), saved.parent_path().filename().string());
 }
+
+// The render on screen with each layer, written as raytrace writes an EXR:
+// through renderLayers, by the displayed scene's intersector, through the
+// displayed camera.
+void saveLayers(ViewerState& state, const RenderDisplay& display, const fs::path& target) {
+  const std::shared_ptr<const RenderScene>& scene = display.renderScene();
+  if (!scene || scene->preview)
+    throw std::runtime_error("not saved: the scene is still being prepared");
+  writeExr(renderLayers(scene->prepared->intersector(), display.camera(), display.threads()),
+           target);
+  setMessage(state, "saved the layers to " + target.string(), false);
+}
+
+std::string pathOf(const ViewerState& state, SaveKind kind) {
+  switch (kind) {
+    case SaveKind::Render: return state.savePath;
+    case SaveKind::Layers: return state.layersPath;
+    case SaveKind::Window: return state.screenshotPath;
+    case SaveKind::Scene: break;
+  }
+  return state.sceneSavePath;
+}
 }  // namespace
 
 void save(ViewerState& state, RenderDisplay& display, SaveKind kind, Existing existing) {
-  const fs::path target = absoluteOf(kind == SaveKind::Render   ? state.savePath
-                                     : kind == SaveKind::Window ? state.screenshotPath
-                                                                : state.sceneSavePath);
+  const fs::path target = absoluteOf(pathOf(state, kind));
   try {
     refuseExisting(target, existing);
     switch (kind) {
       case SaveKind::Render:
+        if (isExrPath(target)) {
+          saveLayers(state, display, target);
+          break;
+        }
         writeImage(display.colorImage(), target);
         setMessage(state, "saved the render to " + target.string(), false);
         break;
+      case SaveKind::Layers: saveLayers(state, display, target); break;
       case SaveKind::Window:
         // Written after the frame is drawn; the frame loop says where.
         state.screenshotRequest = target.string();
@@ -85,13 +112,16 @@ void proposeSavePaths(ViewerState& state, const fs::path& scene) {
   std::vector<fs::path> candidates = userFolders();
   const fs::path here = chooseSaveFolder(candidates, fs::temp_directory_path());
   state.savePath = freeName(here, stem + "-render", ".png").string();
+  state.layersPath = freeName(here, stem + "-layers", ".exr").string();
   state.screenshotPath = freeName(here, stem + "-window", ".png").string();
   // The scene beside its original when that folder is the user's own, so
   // that its meshes' relative paths still hold; named there as the scene
-  // was (the message after saving gives the full path).
+  // was (the message after saving gives the full path). The scene made for
+  // a bare mesh is proposed as <stem>.sce, the name raytrace gives it.
   candidates.insert(candidates.begin(), scene.parent_path());
   const fs::path folder = chooseSaveFolder(candidates, fs::temp_directory_path());
-  const fs::path name = freeName(folder, stem + "-modes", ".sce").filename();
+  const fs::path name =
+      freeName(folder, isBareMesh(scene) ? stem : stem + "-modes", ".sce").filename();
   state.sceneSavePath =
       (folder == absoluteOf(scene.parent_path().string()) ? scene.parent_path() / name
                                                           : folder / name)

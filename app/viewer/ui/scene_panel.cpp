@@ -55,7 +55,7 @@ void drawScenePanel(ViewerState& state, float keepBelow) {
   ImGui::SetNextItemWidth(-60);
   if (state.focusPathField) ImGui::SetKeyboardFocusHere();
   state.focusPathField = false;
-  const bool entered = ImGui::InputTextWithHint("##path", ".sce file or folder", &state.pathField,
+  const bool entered = ImGui::InputTextWithHint("##path", ".sce, mesh or folder", &state.pathField,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if ((ImGui::Button("Open") || entered) && !state.pathField.empty())
@@ -67,7 +67,15 @@ void drawScenePanel(ViewerState& state, float keepBelow) {
       state.browser.emplace();
   }
   if (state.browser) drawFolderBrowser(state);
-  ImGui::TextDisabled("Drop a .sce file or a folder on the window to open it.");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("Drop a .sce file, a mesh or a folder on the window to open it.");
+  ImGui::PopStyleColor();
+  if (state.session.generated()) {
+    ImGui::TextWrapped(
+        "A generated scene for %s: a camera framing the mesh, a light and a floor. "
+        "Save scene writes it as .sce beside the mesh, to edit.",
+        state.session.file().filename().string().c_str());
+  }
   // Errors and warnings about the open scene stay here while it is open.
   if (const std::string& error = state.session.reloadError(); !error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);

@@ -140,7 +140,9 @@ struct TimingStats {
 };
 
 // A save that would replace a file waits for the user's answer (saving.cpp).
-enum class SaveKind { Render, Window, Scene };
+// Layers: the render's EXR of every layer (render/layers.h), as raytrace
+// writes it; a Render save to a .exr path is one too.
+enum class SaveKind { Render, Layers, Window, Scene };
 struct OverwriteQuestion {
   SaveKind kind;
   std::filesystem::path path;
@@ -180,7 +182,7 @@ struct ViewerState {
   AbState ab;
   TimingStats timing;
   LiveReload reload;
-  std::string savePath, screenshotPath, sceneSavePath;  // absolute, proposed new
+  std::string savePath, layersPath, screenshotPath, sceneSavePath;  // absolute, proposed new
   std::optional<OverwriteQuestion> overwrite;
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn
   std::string message;            // last action's result

@@ -58,11 +58,13 @@ std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budge
   return meshSceneText(bounds, mesh.filename().string());
 }
 
-Scene loadMeshAsScene(const std::filesystem::path& mesh, MemoryBudget& budget) {
-  const std::string text = meshSceneText(mesh, budget);
+std::filesystem::path meshScenePath(const std::filesystem::path& mesh) {
   auto sceneFile = mesh;
-  sceneFile.replace_extension(".sce");
-  return parseScene(text, sceneFile, budget);
+  return sceneFile.replace_extension(".sce");
+}
+
+Scene loadMeshAsScene(const std::filesystem::path& mesh, MemoryBudget& budget) {
+  return parseScene(meshSceneText(mesh, budget), meshScenePath(mesh), budget);
 }
 
 }  // namespace meshtrace

@@ -15,7 +15,11 @@ Color Integrator::pixel(const Camera& camera, double x, double y, Counters& coun
 }
 
 void Integrator::quad(double x, double y, Color out[kPacketSize], Counters& counters) const {
-  const Camera& camera = intersector_.scene().camera;
+  quad(intersector_.scene().camera, x, y, out, counters);
+}
+
+void Integrator::quad(const Camera& camera, double x, double y, Color out[kPacketSize],
+                      Counters& counters) const {
   // Lane r is pixel (x + r % 2, y + r / 2).
   Ray rays[kPacketSize];
   for (int r = 0; r < kPacketSize; ++r) rays[r] = camera.primaryRay(x + r % 2, y + r / 2);

@@ -8,8 +8,11 @@
 namespace meshtrace {
 
 ExrImage renderLayers(const SceneIntersector& intersector, int threads) {
-  const Image color = render(intersector, threads);
-  const Camera& camera = intersector.scene().camera;
+  return renderLayers(intersector, intersector.scene().camera, threads);
+}
+
+ExrImage renderLayers(const SceneIntersector& intersector, const Camera& camera, int threads) {
+  const Image color = render(intersector, camera, threads);
   const int w = color.width, h = color.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * h;
   ExrImage out{w, h, {}};

@@ -12,9 +12,13 @@ Image render(const Scene& scene, const RenderOptions& options, Counters* counter
 }
 
 Image render(const SceneIntersector& intersector, int threads, Counters* counters) {
-  const Scene& scene = intersector.scene();
+  return render(intersector, intersector.scene().camera, threads, counters);
+}
+
+Image render(const SceneIntersector& intersector, const Camera& camera, int threads,
+             Counters* counters) {
   const Integrator integrator(intersector);
-  Image image(scene.camera.width(), scene.camera.height());
+  Image image(camera.width(), camera.height());
   const int width = image.width, height = image.height;
   // Pixels go in 2x2 quads whose primary rays are traced together
   // (Integrator::quad), in tiles of 8x8 quads. The quads sit on even
@@ -28,7 +32,7 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
         const int row = 2 * qr, x = 2 * qc;
         if (row + 1 < height && x + 1 < width) {
           Color quad[kPacketSize];
-          integrator.quad(x, flippedRow(row + 1, height), quad, c);
+          integrator.quad(camera, x, flippedRow(row + 1, height), quad, c);
           image.at(x, row + 1) = quad[0];
           image.at(x + 1, row + 1) = quad[1];
           image.at(x, row) = quad[2];
@@ -37,7 +41,7 @@ Image render(const SceneIntersector& intersector, int threads, Counters* counter
         }
         for (int r = row; r < std::min(row + 2, height); ++r)
           for (int px = x; px < std::min(x + 2, width); ++px)
-            image.at(px, r) = integrator.pixel(px, flippedRow(r, height), c);
+            image.at(px, r) = integrator.pixel(camera, px, flippedRow(r, height), c);
       }
   };
   const Counters total = forEachTile((width + 1) / 2, (height + 1) / 2, 8, threads, tile);

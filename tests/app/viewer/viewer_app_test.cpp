@@ -66,11 +66,11 @@ TEST(Drop, OpensASceneAndAddsAFolder) {
 TEST(Drop, RefusesAFileThatIsNotAScene) {
   ViewerApp app(bareOptions(), "viewer");
   drop(app, {(testScenes() / "viewer_test.sce").string()});
-  drop(app, {(testScenes() / "box.off").string()});
+  drop(app, {(testScenes() / "viewer_test.txt").string()});
   EXPECT_TRUE(app.state().messageIsError);
-  EXPECT_NE(app.state().message.find("not a .sce file or a folder"), std::string::npos)
+  EXPECT_NE(app.state().message.find("not a .sce file, a mesh file or a folder"), std::string::npos)
       << app.state().message;
-  EXPECT_NE(app.state().message.find("box.off"), std::string::npos);
+  EXPECT_NE(app.state().message.find("viewer_test.txt"), std::string::npos);
   EXPECT_EQ(app.state().session.file().filename(), "viewer_test.sce") << "the scene stays open";
   EXPECT_TRUE(app.state().session.loaded());
 }

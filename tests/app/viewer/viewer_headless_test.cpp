@@ -154,6 +154,35 @@ TEST(ViewerHeadless, ShowsTheScenesWarningsInTheWindow) {
   EXPECT_EQ(count, 2u) << "in the scene panel and on the message line:\n" << shown;
 }
 
+// A cube as ASCII PLY: a format read through OpenMesh, as users bring.
+const std::string kCubePly =
+    "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 12\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n"
+    "3 2 3 7\n3 2 7 6\n3 1 2 6\n3 1 6 5\n3 0 4 7\n3 0 7 3\n";
+
+TEST(ViewerHeadless, OpensABareMeshFramedAsRaytraceFramesIt) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "cube.ply", kCubePly);
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  test::expectSuccess(viewerTool(), headless(dir, {(dir / "cube.ply").string()}), dir);
+  EXPECT_NE(test::readFileBytes(dir / "out.png"), test::kOldOutput);
+  const std::string shown = test::readFileBytes(dir / "out.txt");
+  test::expectMentions(shown, {"generated scene for cube.ply", "1 planes", "1 lights", "12 / 8"});
+  EXPECT_FALSE(fs::exists(dir / "cube.sce")) << "nothing saved unless asked";
+}
+
+TEST(ViewerHeadless, ABadBareMeshExitsNamingTheFileAndLeavesTheOutput) {
+  const auto dir = test::scratchDir();
+  std::string bad = kCubePly;
+  bad.replace(bad.find("3 0 2 1"), 7, "3 0 2 99");
+  test::writeFile(dir / "bad.ply", bad);
+  test::writeFile(dir / "out.png", test::kOldOutput);
+  test::expectRefusal(viewerTool(), headless(dir, {(dir / "bad.ply").string()}), dir, {"bad.ply"},
+                      dir / "out.png");
+}
+
 TEST(ViewerVersion, IsTheProjectsVersionFromTheTopLevelCMakeLists) {
   // The one place the version is written: project(meshtrace VERSION x.y.z ...).
   const std::string cmake = test::readFileBytes(test::sourceDir() / "CMakeLists.txt");

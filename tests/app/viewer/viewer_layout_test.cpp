@@ -76,6 +76,27 @@ TEST(LineBreaks, BreakOnlyAtSpacesAndFitTheWidth) {
   EXPECT_EQ(breakAtSpaces("", 10, 10, measure), std::vector<std::string>{""});
 }
 
+TEST(LineBreaks, FieldsBreakBetweenThemNeverInside) {
+  const auto measure = [](const std::string& s) { return 7.0f * s.size(); };
+  const std::vector<std::string> fields{"load 9.1 ms", "first image 71.0 ms", "exact 584.5 ms"};
+  EXPECT_EQ(breakBetweenFields(fields, "  ", 1000, measure),
+            std::vector<std::string>{"load 9.1 ms  first image 71.0 ms  exact 584.5 ms"});
+  EXPECT_EQ(breakBetweenFields(fields, "  ", 7 * 34, measure),
+            (std::vector<std::string>{"load 9.1 ms  first image 71.0 ms", "exact 584.5 ms"}));
+  EXPECT_EQ(breakBetweenFields(fields, "  ", 7 * 12, measure), fields)
+      << "a field wider than the line stands alone";
+  EXPECT_EQ(breakBetweenFields({}, "  ", 10, measure), std::vector<std::string>{""});
+}
+
+TEST(LineBreaks, ANameTooWideIsCutShortWithDots) {
+  const auto measure = [](const std::string& s) { return 7.0f * s.size(); };
+  EXPECT_EQ(elide("icosphere", 7 * 9, measure), "icosphere");
+  EXPECT_EQ(elide("icosphere", 7 * 8, measure), "icosp...");
+  EXPECT_EQ(elide("icosphere", 7 * 2, measure), "i...") << "its first letter at least";
+  EXPECT_EQ(elide("\xc3\xa9t\xc3\xa9-mesh", 7 * 6, measure), "\xc3\xa9t...")
+      << "never inside a UTF-8 character";
+}
+
 TEST(PaneHeights, TheInspectorFillsItsRoomUnlessDraggedAndNeverVanishes) {
   EXPECT_EQ(paneHeight(0, 300), 300);
   EXPECT_EQ(paneHeight(150, 300), 150);

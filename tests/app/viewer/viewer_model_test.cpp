@@ -438,6 +438,7 @@ TEST(Options, ParsesTheHeadlessSnapshotCommandLine) {
   ASSERT_TRUE(o);
   EXPECT_EQ(o->scene, "scene.sce");
   EXPECT_EQ(o->width, 800);
+  EXPECT_TRUE(o->sizeGiven) << "--size is taken as given, not fitted to the screen";
   EXPECT_EQ(o->overlay, Overlay::BoxHits);
   EXPECT_EQ(o->view, View::Normals);
   ASSERT_TRUE(o->pin);

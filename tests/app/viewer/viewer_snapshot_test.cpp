@@ -384,6 +384,36 @@ TEST(ViewerContent, TheObjectsListStaysInViewWhateverTheSceneFolders) {
   }
 }
 
+TEST(ViewerContent, NarrowPanelsBreakLinesBetweenFieldsAndCutLongNamesShort) {
+  // The test scene with the ball under a long name.
+  const fs::path dir = shotDir() / "long_name";
+  fs::create_directories(dir);
+  const fs::path scenes = test::sourceDir() / "tests/app/viewer/scenes";
+  fs::copy_file(scenes / "box.off", dir / "box.off", fs::copy_options::overwrite_existing);
+  fs::copy_file(scenes / "ball.off", dir / "a_ball_with_a_long_name.off",
+                fs::copy_options::overwrite_existing);
+  std::string text = test::readFileBytes(scenes / "viewer_test.sce");
+  text.replace(text.find("ball.off"), 8, "a_ball_with_a_long_name.off");
+  test::writeFile(dir / "long.sce", text);
+
+  const Shot wide = snapshot("wide_panels", "", (dir / "long.sce").string(), "1280x720");
+  ASSERT_EQ(wide.exitCode, 0);
+  expectShows(wide,
+              {"| show | mesh | shading | tris / verts |", "\nload -  first image -  exact -\n",
+               "\nframes while rendering:  longest -  99% -\n"});
+
+  // At 900x600 the counts go under each name, and the long name is cut
+  // short; at 640x480 the Render panel's lines break between fields.
+  const Shot small = snapshot("narrow_panels", "", (dir / "long.sce").string(), "900x600");
+  ASSERT_EQ(small.exitCode, 0);
+  expectShows(
+      small, {"| | mesh | shading |\n", "| [x] | a_ball_", "...\n80 tris", "| [x] | box\n12 tris"});
+  EXPECT_EQ(small.text.find("a_ball_with_a_long_name"), std::string::npos) << small.text;
+  const Shot tiny = snapshot("tiny_panels", "", (dir / "long.sce").string(), "640x480");
+  ASSERT_EQ(tiny.exitCode, 0);
+  expectShows(tiny, {"\nload -  first image -\nexact -\n", "\nframes while rendering:\n"});
+}
+
 TEST(ViewerContent, TheInspectorsPaneKeepsItsPlaceWhateverThePixelShows) {
   // (150, 70): the mirror box, a reflection and a shadowed light; (20, 10):
   // the floor, one ray.

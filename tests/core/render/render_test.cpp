@@ -8,6 +8,7 @@
 
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/integrator.h"
+#include "meshtrace/render/layers.h"
 #include "support/files.h"
 #include "support/paths.h"
 #include "support/scene_snippets.h"
@@ -105,6 +106,29 @@ TEST(Render, MissesGiveTheBackground) {
   const Scene scene = parseScene(test::kCameraLine + "background 0.25 0.5 0.75\n", "empty.sce");
   const Image image = render(scene, {});
   for (const Color& c : image.pixels) EXPECT_EQ(c, Color(0.25, 0.5, 0.75));
+}
+
+TEST(RenderLayers, ThroughAnotherCameraAreThoseOfTheSceneSeenFromIt) {
+  const Scene scene = busyScene();
+  // Another view and size: the viewer's camera, once moved.
+  CameraSpec moved = scene.camera.spec();
+  moved.eye = Vec3(2.0, 2.5, 5.0);
+  moved.width = 29;
+  moved.height = 31;
+  Scene fromThere = scene;
+  fromThere.camera = Camera(moved);
+  const SceneIntersector here(scene, {}), there(fromThere, {});
+  const ExrImage through = renderLayers(here, Camera(moved), 1);
+  const ExrImage seen = renderLayers(there, 1);
+  ASSERT_EQ(through.width, 29);
+  ASSERT_EQ(through.height, 31);
+  ASSERT_EQ(through.channels.size(), seen.channels.size());
+  for (std::size_t c = 0; c < seen.channels.size(); ++c) {
+    EXPECT_EQ(through.channels[c].name, seen.channels[c].name);
+    EXPECT_TRUE(through.channels[c].floats == seen.channels[c].floats &&
+                through.channels[c].uints == seen.channels[c].uints)
+        << seen.channels[c].name;
+  }
 }
 
 TEST(DebugAabb, CountsTheBoxesEachPrimaryRayMeets) {

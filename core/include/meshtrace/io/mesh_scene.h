@@ -23,8 +23,11 @@ std::string meshSceneText(const Aabb& bounds, const std::string& meshName);
 // it. Throws InputError for a bad or empty mesh.
 std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budget);
 
-// The scene meshSceneText makes for `mesh`, as if saved beside it as
-// <stem>.sce.
+// Where the text of meshSceneText(mesh, ...) belongs: <stem>.sce beside
+// the mesh, the folder its mesh line is relative to.
+std::filesystem::path meshScenePath(const std::filesystem::path& mesh);
+
+// The scene meshSceneText makes for `mesh`, as if saved at meshScenePath.
 Scene loadMeshAsScene(const std::filesystem::path& mesh, MemoryBudget& budget);
 
 }  // namespace meshtrace

@@ -25,6 +25,8 @@ class Integrator {
   void quad(double x, double y, Color out[kPacketSize], Counters& counters) const;
   // The same through another camera (the viewer's, once moved).
   Color pixel(const Camera& camera, double x, double y, Counters& counters) const;
+  void quad(const Camera& camera, double x, double y, Color out[kPacketSize],
+            Counters& counters) const;
 
   const SceneIntersector& intersector() const { return intersector_; }
 

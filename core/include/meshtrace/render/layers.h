@@ -18,5 +18,7 @@ inline constexpr std::uint32_t kNoHitId = 0xffffffffu;
 // Renders the image and probes each pixel's primary ray, on `threads`
 // threads (0: all cores).
 ExrImage renderLayers(const SceneIntersector& intersector, int threads);
+// The same through `camera` instead of the scene's (the viewer's, once moved).
+ExrImage renderLayers(const SceneIntersector& intersector, const Camera& camera, int threads);
 
 }  // namespace meshtrace

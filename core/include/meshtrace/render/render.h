@@ -15,6 +15,9 @@ struct RenderOptions {
 Image render(const Scene& scene, const RenderOptions& options, Counters* counters = nullptr);
 // With an intersector built beforehand (so that its build can be timed apart).
 Image render(const SceneIntersector& intersector, int threads, Counters* counters = nullptr);
+// The same through `camera` instead of the scene's (the viewer's, once moved).
+Image render(const SceneIntersector& intersector, const Camera& camera, int threads,
+             Counters* counters = nullptr);
 
 // Number of mesh bounding boxes `ray` meets at t >= 0 (a box holding the
 // origin counts), as the debug_aabb image counts them.
