@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "meshtrace/io/output_file.h"
+#include "meshtrace/io/scene_parser.h"
 #include "viewer/model/save_target.h"
 
 namespace meshtrace::viewer {
@@ -101,7 +102,12 @@ std::string movedMeshPath(std::string_view written, const std::filesystem::path&
       std::filesystem::absolute(from / path, ec).lexically_normal();
   const std::filesystem::path folder = std::filesystem::absolute(to, ec).lexically_normal();
   const std::filesystem::path relative = target.lexically_relative(folder);
-  return (relative.empty() ? target : relative).string();
+  const std::string moved = (relative.empty() ? target : relative).string();
+  if (!isSceneWord(moved))
+    throw std::runtime_error("the mesh " + std::string(written) + " would be written as '" + moved +
+                             "', which a scene file cannot hold (white space or '#'); save the "
+                             "scene beside its meshes or move them");
+  return moved;
 }
 }  // namespace
 

@@ -48,6 +48,12 @@ std::string meshSceneText(const Aabb& bounds, const std::string& meshName) {
 }
 
 std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budget) {
+  const std::string name = mesh.filename().string();
+  if (!isSceneWord(name))
+    throw InputError::inFile(mesh,
+                             "a scene's mesh line cannot name this file: scene files separate "
+                             "words by white space and start comments with '#'; rename the "
+                             "mesh, or link it under a name without them");
   Aabb bounds;
   {
     // Its own plan: this copy is freed before the scene loads its own.
@@ -55,7 +61,7 @@ std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budge
     for (const Vec3& v : readMesh(mesh, probe).vertices) bounds.extend(v);
   }
   if (bounds.empty()) throw InputError::inFile(mesh, "the mesh has no vertices to frame");
-  return meshSceneText(bounds, mesh.filename().string());
+  return meshSceneText(bounds, name);
 }
 
 std::filesystem::path meshScenePath(const std::filesystem::path& mesh) {

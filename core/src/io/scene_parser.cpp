@@ -328,4 +328,11 @@ Scene loadScene(const std::filesystem::path& file) {
   return loadScene(file, budget);
 }
 
+bool isSceneWord(std::string_view text) {
+  if (text.empty()) return false;
+  for (const char c : text)
+    if (text::endsWord(c)) return false;
+  return true;
+}
+
 }  // namespace meshtrace

@@ -16,6 +16,9 @@ namespace meshtrace::text {
 inline constexpr const char* kNulByteMessage = "binary data (a NUL byte): not a text file";
 
 inline bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+// What ends a word of a scene file: white space, a line end, a comment's
+// '#', or a NUL (refused where it is met).
+inline bool endsWord(char c) { return isSpace(c) || c == '\n' || c == '#' || c == '\0'; }
 
 bool parseDouble(std::string_view token, double& out);
 bool parseInt64(std::string_view token, std::int64_t& out);

@@ -12,8 +12,6 @@ namespace {
 
 constexpr std::size_t kBlockBytes = std::size_t{1} << 16;
 
-bool endsWord(char c) { return isSpace(c) || c == '\n' || c == '#' || c == '\0'; }
-
 }  // namespace
 
 TokenStream::TokenStream(std::string_view text, const std::filesystem::path& file)

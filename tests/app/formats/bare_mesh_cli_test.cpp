@@ -98,5 +98,20 @@ TEST_F(BareMeshCli, PrintSceneRefusesWhatIsNotAMesh) {
                       {"a.sce", "not a mesh file"}, {});
 }
 
+// A scene file has no quoting, so a mesh whose name holds white space or
+// '#' cannot be named by the scene a bare mesh becomes: refused by name,
+// with the old output kept, rather than misread as other words.
+TEST_F(BareMeshCli, AMeshWhoseNameASceneCannotHoldIsRefusedByName) {
+  for (const char* name : {"my torus.ply", "tab\ttorus.ply", "a#b.ply"}) {
+    std::filesystem::copy_file(dir_ / "torus.ply", dir_ / name);
+    const auto out = test::writeFile(dir_ / "out.png", test::kOldOutput);
+    test::expectRefusal(test::raytraceTool(), {path(name), out.string()}, dir_,
+                        {name, "cannot name this file", "rename"}, out);
+    test::expectRefusal(test::raytraceTool(), {"--print-scene", path(name)}, dir_,
+                        {name, "cannot name this file"}, {});
+    std::filesystem::remove(dir_ / name);
+  }
+}
+
 }  // namespace
 }  // namespace meshtrace

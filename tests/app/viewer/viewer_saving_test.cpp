@@ -59,6 +59,19 @@ TEST(SceneWriter, ASceneSavedElsewhereStillFindsItsMeshes) {
   EXPECT_EQ(fs::canonical(saved.meshes[0].file()), fs::canonical(testScenes() / "ball.off"));
 }
 
+// A path a scene file cannot hold (white space, '#') is refused, not
+// written to be misread as other words.
+TEST(SceneWriter, RefusesAMeshPathASceneFileCannotHold) {
+  const std::string text =
+      "camera 0 0 5 0 0 0 0 1 0 45 8 6\nmesh a.off FLAT 1 1 1 1 1 1 1 1 1 1 0\n";
+  EXPECT_THROW(rewriteMeshes(text, {Shading::Flat}, {true}, "/my scenes", "/elsewhere"),
+               std::runtime_error);
+  EXPECT_THROW(rewriteMeshes(text, {Shading::Flat}, {true}, "/s#1", "/elsewhere"),
+               std::runtime_error);
+  // Beside its meshes the path is kept as written.
+  EXPECT_NO_THROW(rewriteMeshes(text, {Shading::Flat}, {true}, "/my scenes", "/my scenes"));
+}
+
 TEST(SceneWriter, RefusesToReplaceAFileUnlessTold) {
   const fs::path dir = freshDir("refuse");
   fs::copy(testScenes(), dir, fs::copy_options::recursive);

@@ -358,5 +358,12 @@ TEST(SceneParser, RejectsAMeshPathThatIsADirectory) {
                  {"s.sce:2", "meshdir.off", "directory"});
 }
 
+TEST(SceneWords, AreWhatTheSceneReaderTakesAsOneWord) {
+  for (const char* word : {"torus.off", "../meshes/knot.ply", "/abs/path/m.obj", "a,b;c"})
+    EXPECT_TRUE(isSceneWord(word)) << word;
+  for (const char* word : {"", "my torus.off", "a\tb", "a#b", "a\nb", "a\rb"})
+    EXPECT_FALSE(isSceneWord(word)) << word;
+}
+
 }  // namespace
 }  // namespace meshtrace

@@ -23,4 +23,9 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, Memor
 // With a budget of defaultMemoryLimit().
 Scene parseScene(std::string_view text, const std::filesystem::path& file);
 
+// Whether `text` can be written as one word of a scene file, as a mesh
+// line's file name must be: not empty, no white space (which separates
+// words) and no '#' (which starts a comment). Scene files have no quoting.
+bool isSceneWord(std::string_view text);
+
 }  // namespace meshtrace
