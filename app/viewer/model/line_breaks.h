@@ -1,7 +1,7 @@
 #pragma once
 // Fitting text to a width: a line broken at its spaces only, never inside
 // a number, as ImGui's own wrapping does after a '.' or ',' ("5." then
-// "50000" reads as two numbers); a line of fields ("exact 184.5 ms")
+// "50000" reads as two numbers); a line of fields (the Render panel's timings)
 // broken between fields only; a name cut short with "...".
 #include <functional>
 #include <string>

@@ -53,7 +53,7 @@ void beginCapture(ViewerState& state);
 void endCapture(ViewerState& state);
 void drawCapturedAs(ViewerState& state, const std::string& text, const std::function<void()>& draw);
 
-// Fields of one line of text ("exact 184.5 ms"), joined by `separator`,
+// Fields of one line of text (a label and its value each), joined by `separator`,
 // broken between fields where the panel is too narrow for all of them,
 // never inside one (field_lines.cpp).
 void textFields(const std::vector<std::string>& fields, const std::string& separator = "  ");
