@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "common/load_progress.h"
 #include "common/progress.h"
 #include "formats/openmesh_reader.h"
 #include "meshtrace/io/image.h"
@@ -113,8 +114,18 @@ std::optional<Scene> loadAndDescribe(const std::filesystem::path& file, MemoryBu
   const auto start = std::chrono::steady_clock::now();
   formats::registerOpenMeshFormats();
   try {
-    Scene scene = isMeshFile(file) && !isSceneFile(file) ? loadMeshAsScene(file, budget)
-                                                         : loadScene(file, budget);
+    Scene scene = [&] {
+      // Its line is wiped before anything else is printed: "loaded ..." or
+      // the error, which must not be glued onto a half-drawn line.
+      LoadProgress progress;
+      budget.setLoadObserver(&progress);
+      const struct Unwatch {
+        MemoryBudget& budget;
+        ~Unwatch() { budget.setLoadObserver(nullptr); }
+      } unwatch{budget};
+      return isMeshFile(file) && !isSceneFile(file) ? loadMeshAsScene(file, budget)
+                                                    : loadScene(file, budget);
+    }();
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::printf(
         "loaded %s: %zu objects (%zu spheres, %zu planes, %zu cylinders, %zu meshes), "

@@ -14,14 +14,30 @@ namespace meshtrace::app {
 void setProgressShown(bool shown);
 bool progressShown();
 
+// "12 s", "3 min 5 s", "1 h 2 min"; below 10 s to a tenth ("0.3 s").
+std::string durationText(double seconds);
+
+// One line of text redrawn in place on stderr (when progress is shown),
+// ending in a carriage return so that the tools' next line of output
+// writes over it; wiped when cleared or destroyed.
+class ProgressLine {
+ public:
+  ProgressLine() = default;
+  ~ProgressLine() { clear(); }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  void draw(std::string text);
+  void clear();
+
+ private:
+  std::size_t width_ = 0;  // of the line last drawn
+};
+
 class Progress {
  public:
   // `what`: the work, as "rendering" in "rendering 3/10 (scene.sce), 12 s left".
   Progress(std::string what, std::size_t total);
-  ~Progress();
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-
   // `done` items are finished and `item` comes next. The line ends in a
   // carriage return, so the tools' next line of output writes over it.
   void update(std::size_t done, const std::string& item);
@@ -30,7 +46,7 @@ class Progress {
   std::string what_;
   std::size_t total_;
   std::chrono::steady_clock::time_point start_;
-  std::size_t width_ = 0;  // of the line last drawn
+  ProgressLine line_;
 };
 
 }  // namespace meshtrace::app

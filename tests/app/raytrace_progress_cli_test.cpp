@@ -21,14 +21,9 @@ struct TwoScenes {
   }
 };
 
-// Runs `command` with its output on a pseudo-terminal; what it printed.
-test::ToolResult onTerminal(const std::string& command, const std::filesystem::path& dir) {
-  return test::runTool("/usr/bin/script", {"-qec", command, "/dev/null"}, dir);
-}
-
 TEST(RaytraceProgress, ShowsEachSceneAndTheTimeLeftOnATerminal) {
   const TwoScenes scenes;
-  const auto r = onTerminal(scenes.command(""), scenes.dir);
+  const auto r = test::runOnTerminal(scenes.command(""), scenes.dir);
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   EXPECT_NE(r.out.find("scene 1/2 (good.sce)\r"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("scene 2/2 (second.sce), "), std::string::npos) << r.out;
@@ -37,7 +32,7 @@ TEST(RaytraceProgress, ShowsEachSceneAndTheTimeLeftOnATerminal) {
 
 TEST(RaytraceProgress, IsQuietWithQuietOnATerminal) {
   const TwoScenes scenes;
-  const auto r = onTerminal(scenes.command("--quiet"), scenes.dir);
+  const auto r = test::runOnTerminal(scenes.command("--quiet"), scenes.dir);
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   EXPECT_NE(r.out.find("wrote"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("scene 1/2"), std::string::npos) << r.out;

@@ -66,4 +66,8 @@ ToolResult expectSuccess(const std::filesystem::path& tool, const std::vector<st
   return result;
 }
 
+ToolResult runOnTerminal(const std::string& command, const std::filesystem::path& dir) {
+  return runTool("/usr/bin/script", {"-qec", command, "/dev/null"}, dir);
+}
+
 }  // namespace meshtrace::test

@@ -45,4 +45,9 @@ void expectRefusedBeforeRendering(const ToolResult& r);
 ToolResult expectSuccess(const std::filesystem::path& tool, const std::vector<std::string>& args,
                          const std::filesystem::path& dir);
 
+// Runs the shell `command` in `dir` with its stdout and stderr on a
+// pseudo-terminal (made by script(1)), as a user at a terminal would;
+// what it printed, both streams, is in `out`.
+ToolResult runOnTerminal(const std::string& command, const std::filesystem::path& dir);
+
 }  // namespace meshtrace::test

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/load_observer.h"
 
 namespace meshtrace::text {
 
@@ -31,7 +32,9 @@ std::string openFailure(const std::filesystem::path& file, int error) {
 
 }  // namespace
 
-FileSource::FileSource(const std::filesystem::path& file, std::uintmax_t maxBytes) : file_(file) {
+FileSource::FileSource(const std::filesystem::path& file, std::uintmax_t maxBytes,
+                       LoadObserver* observer)
+    : file_(file), observer_(observer) {
   // Non-blocking: opening a named pipe must not wait for a writer.
   fd_ = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
   if (fd_ < 0) throw InputError::inFile(file, openFailure(file, errno));
@@ -67,6 +70,7 @@ std::size_t FileSource::read(char* out, std::size_t capacity) {
     if (n == 0) break;
     done += static_cast<std::size_t>(n);
   }
+  if (observer_ != nullptr && done > 0) observer_->bytesRead(file_, done, size_);
   return done;
 }
 

@@ -7,14 +7,20 @@
 #include <cstdint>
 #include <filesystem>
 
+namespace meshtrace {
+class LoadObserver;
+}
+
 namespace meshtrace::text {
 
 class FileSource {
  public:
   // Throws InputError naming `file` if it is missing, a symlink loop or a
   // dangling symlink, unreadable, a directory, not a regular file (a pipe
-  // or device: it might never end), or larger than `maxBytes`.
-  FileSource(const std::filesystem::path& file, std::uintmax_t maxBytes);
+  // or device: it might never end), or larger than `maxBytes`. Each read
+  // is reported to `observer` if there is one.
+  FileSource(const std::filesystem::path& file, std::uintmax_t maxBytes,
+             LoadObserver* observer = nullptr);
   ~FileSource();
   FileSource(const FileSource&) = delete;
   FileSource& operator=(const FileSource&) = delete;
@@ -29,6 +35,7 @@ class FileSource {
   std::filesystem::path file_;
   int fd_ = -1;
   std::uintmax_t size_ = 0;
+  LoadObserver* observer_ = nullptr;
 };
 
 }  // namespace meshtrace::text

@@ -304,7 +304,7 @@ class OffParser {
 }  // namespace
 
 MeshData readOff(const std::filesystem::path& file, MemoryBudget& budget) {
-  text::FileSource source(file, kMaxOffBytes);
+  text::FileSource source(file, kMaxOffBytes, budget.loadObserver());
   return OffParser(source, budget).parse();
 }
 

@@ -227,7 +227,7 @@ class BinaryPlyReader {
 }  // namespace
 
 std::optional<MeshData> readBinaryPly(const std::filesystem::path& file, MemoryBudget& budget) {
-  text::FileSource source(file, kMaxPlyBytes);
+  text::FileSource source(file, kMaxPlyBytes, budget.loadObserver());
   return BinaryPlyReader(source, budget).read();
 }
 

@@ -11,6 +11,7 @@
 #include "io/text.h"
 #include "io/token_stream.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/load_observer.h"
 #include "meshtrace/io/mesh_reader.h"
 
 namespace meshtrace {
@@ -238,6 +239,7 @@ class SceneParser {
         MeshData data = readMesh(m.file, budget_);
         budget_.reserve(normalsBytes(data, m.shading), "load",
                         "the normals of " + m.file.filename().string());
+        if (LoadObserver* observer = budget_.loadObserver()) observer->phase(m.file, "normals");
         loaded[i].emplace(m.file, std::move(data), m.shading, m.material);
       } catch (const InputError& e) {
         failed[i] = std::make_exception_ptr(

@@ -15,6 +15,8 @@
 
 namespace meshtrace {
 
+class LoadObserver;
+
 class MemoryLimitError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -40,8 +42,15 @@ class MemoryBudget {
   // Takes back what was reserved for memory that is freed.
   void release(std::uint64_t bytes);
 
+  // The budget goes wherever a load goes, down to each mesh reader, so it
+  // also carries who watches the load's progress: `observer` (not owned;
+  // nullptr for none, the default) from now on.
+  void setLoadObserver(LoadObserver* observer) { observer_ = observer; }
+  LoadObserver* loadObserver() const { return observer_; }
+
  private:
   std::uint64_t limit_;
+  LoadObserver* observer_ = nullptr;
   std::atomic<std::uint64_t> planned_{0};
 };
 
