@@ -9,6 +9,7 @@
 #include <fstream>
 #include <thread>
 
+#include "app/viewer/test_scenes.h"
 #include "meshtrace/io/scene_parser.h"
 #include "support/paths.h"
 #include "viewer/model/camera_control.h"
@@ -22,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path testScenes() { return test::sourceDir() / "tests/app/viewer/scenes"; }
+fs::path testScenes() { return test::viewerTestScenes(); }
 
 ViewerOptions bareOptions() {
   ViewerOptions o;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <thread>
 
+#include "app/viewer/test_scenes.h"
 #include "meshtrace/io/exr.h"
 #include "meshtrace/render/layers.h"
 #include "support/cli.h"
@@ -23,10 +24,7 @@ namespace fs = std::filesystem;
 
 // The viewer's test scene in a fresh folder of its own.
 fs::path sceneCopy(const std::string& name) {
-  const fs::path dir = test::scratchDir() / name;
-  fs::remove_all(dir);
-  fs::copy(test::sourceDir() / "tests/app/viewer/scenes", dir, fs::copy_options::recursive);
-  return dir / "viewer_test.sce";
+  return test::copyOfViewerTestScenes(name) / "viewer_test.sce";
 }
 
 // Until the scene on screen is the one built for the session's camera.

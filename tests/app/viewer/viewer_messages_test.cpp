@@ -5,6 +5,7 @@
 #include <chrono>
 #include <thread>
 
+#include "app/viewer/test_scenes.h"
 #include "support/files.h"
 #include "support/paths.h"
 #include "viewer/ui/viewer_app.h"
@@ -16,9 +17,7 @@ namespace fs = std::filesystem;
 
 // The viewer's test scene with its up vector along the view direction.
 fs::path sceneWithUpAlongTheView(const std::string& name) {
-  const fs::path dir = test::scratchDir() / name;
-  fs::remove_all(dir);
-  fs::copy(test::sourceDir() / "tests/app/viewer/scenes", dir, fs::copy_options::recursive);
+  const fs::path dir = test::copyOfViewerTestScenes(name);
   std::string text = test::readFileBytes(dir / "viewer_test.sce");
   const std::string camera = "camera 0 2.2 5.5  0 0.55 0  0 1 0";
   text.replace(text.find(camera), camera.size(), "camera 0 2.2 5.5  0 0.55 0  0 -1.65 -5.5");

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <thread>
 
+#include "app/viewer/test_scenes.h"
 #include "support/files.h"
 #include "support/paths.h"
 #include "viewer/model/file_watch.h"
@@ -19,14 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path testScenes() { return test::sourceDir() / "tests/app/viewer/scenes"; }
+fs::path testScenes() { return test::viewerTestScenes(); }
 
 // A copy of the test scenes to edit.
 fs::path editableScenes(const std::string& name) {
-  const fs::path dir = test::scratchDir() / ("viewer_reload_" + name);
-  fs::remove_all(dir);
-  fs::copy(testScenes(), dir, fs::copy_options::recursive);
-  return dir;
+  return test::copyOfViewerTestScenes("viewer_reload_" + name);
 }
 
 // Replaces the first `from` in the file with `to`.

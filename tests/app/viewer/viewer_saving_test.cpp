@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include "app/viewer/test_scenes.h"
 #include "meshtrace/io/scene_parser.h"
 #include "support/files.h"
 #include "support/paths.h"
@@ -17,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path testScenes() { return test::sourceDir() / "tests/app/viewer/scenes"; }
+fs::path testScenes() { return test::viewerTestScenes(); }
 
 // A fresh folder of its own for each test.
 fs::path freshDir(const std::string& name) {
