@@ -260,8 +260,9 @@ class OffParser {
     Vec3 v;
     for (int k = 0; k < 3; ++k) {
       std::string_view token;
-      if (!tokens.next(token)) fail(" has fewer than 3 coordinates");
-      if (!text::parseDouble(token, v[k])) fail(": " + quoted(token) + " is not a number");
+      const text::NumberToken read = tokens.nextDouble(v[k], token);
+      if (read == text::NumberToken::LineEnded) fail(" has fewer than 3 coordinates");
+      if (read == text::NumberToken::NotANumber) fail(": " + quoted(token) + " is not a number");
       if (!std::isfinite(v[k])) fail(element_problems::nonFiniteCoordinate(token));
     }
     return v;
@@ -276,16 +277,17 @@ class OffParser {
     text::TokenReader tokens(line);
     std::string_view token;
     std::int64_t count = 0;
-    tokens.next(token);
-    if (!text::parseInt64(token, count)) fail(": bad corner count " + quoted(token));
+    if (tokens.nextInt64(count, token) != text::NumberToken::Read)
+      fail(": bad corner count " + quoted(token));
     if (!element_problems::validCornerCount(count, nv_))
       fail(element_problems::badCornerCount(count, nv_));
     corners.clear();
     for (std::int64_t k = 0; k < count; ++k) {
       std::int64_t v = 0;
-      if (!tokens.next(token))
+      const text::NumberToken read = tokens.nextInt64(v, token);
+      if (read == text::NumberToken::LineEnded)
         fail(" announces " + std::to_string(count) + " corners but lists " + std::to_string(k));
-      if (!text::parseInt64(token, v)) fail(": bad vertex index " + quoted(token));
+      if (read == text::NumberToken::NotANumber) fail(": bad vertex index " + quoted(token));
       if (!element_problems::validIndex(v, nv_)) fail(element_problems::indexOutOfRange(v, nv_));
       corners.push_back(static_cast<std::uint32_t>(v));
     }

@@ -76,13 +76,64 @@ bool LineReader::nextNonEmpty(std::string_view& line) {
   return false;
 }
 
-bool TokenReader::next(std::string_view& token) {
-  while (pos_ < line_.size() && isSpace(line_[pos_])) ++pos_;
-  if (pos_ >= line_.size()) return false;
+bool TokenReader::skipSpaces() {
+  const char* p = line_.data() + pos_;
+  const char* end = line_.data() + line_.size();
+  while (p < end && isSpace(*p)) ++p;
+  pos_ = static_cast<std::size_t>(p - line_.data());
+  return p < end;
+}
+
+std::string_view TokenReader::rest() {
   const std::size_t start = pos_;
   while (pos_ < line_.size() && !isSpace(line_[pos_])) ++pos_;
-  token = line_.substr(start, pos_ - start);
+  return line_.substr(start, pos_ - start);
+}
+
+bool TokenReader::next(std::string_view& token) {
+  if (!skipSpaces()) return false;
+  token = rest();
   return true;
+}
+
+NumberToken TokenReader::nextInt64(std::int64_t& out, std::string_view& token) {
+  if (!skipSpaces()) return NumberToken::LineEnded;
+  // Up to 18 digits cannot overflow; a token that is not only such digits
+  // (a sign, more digits, anything else) is left to parseInt64.
+  const char* start = line_.data() + pos_;
+  const char* end = line_.data() + line_.size();
+  const char* last = start + std::min<std::ptrdiff_t>(18, end - start);
+  const char* p = start;
+  std::int64_t value = 0;
+  for (; p < last; ++p) {
+    const auto digit = static_cast<unsigned>(*p - '0');
+    if (digit > 9) break;
+    value = value * 10 + static_cast<std::int64_t>(digit);
+  }
+  if (p > start && (p == end || isSpace(*p))) {
+    token = std::string_view(start, static_cast<std::size_t>(p - start));
+    pos_ = static_cast<std::size_t>(p - line_.data());
+    out = value;
+    return NumberToken::Read;
+  }
+  token = rest();
+  return parseInt64(token, out) ? NumberToken::Read : NumberToken::NotANumber;
+}
+
+NumberToken TokenReader::nextDouble(double& out, std::string_view& token) {
+  if (!skipSpaces()) return NumberToken::LineEnded;
+  // from_chars stops at the first byte no number can hold, a space among
+  // them; a number that ends where its token ends is the token's value.
+  const std::size_t start = pos_;
+  const char* end = line_.data() + line_.size();
+  const auto [ptr, ec] = std::from_chars(line_.data() + start, end, out);
+  if (ec == std::errc() && (ptr == end || isSpace(*ptr))) {
+    pos_ = static_cast<std::size_t>(ptr - line_.data());
+    token = line_.substr(start, pos_ - start);
+    return NumberToken::Read;
+  }
+  token = rest();
+  return parseDouble(token, out) ? NumberToken::Read : NumberToken::NotANumber;
 }
 
 }  // namespace meshtrace::text

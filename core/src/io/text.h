@@ -54,13 +54,27 @@ class LineReader {
   std::size_t line_ = 0;
 };
 
+// What reading a token as a number found.
+enum class NumberToken { Read, LineEnded, NotANumber };
+
 // Whitespace-separated tokens of one line.
 class TokenReader {
  public:
   explicit TokenReader(std::string_view line) : line_(line) {}
   bool next(std::string_view& token);
+  // The next token as parseInt64 or parseDouble would read it, parsed
+  // where it stands rather than found first and parsed after: a mesh's
+  // text is mostly numbers. `token` is set to the token read, unless the
+  // line ended.
+  NumberToken nextInt64(std::int64_t& out, std::string_view& token);
+  NumberToken nextDouble(double& out, std::string_view& token);
 
  private:
+  // Skips spaces: false at the end of the line.
+  bool skipSpaces();
+  // The token from the current position, which is then after it.
+  std::string_view rest();
+
   std::string_view line_;
   std::size_t pos_ = 0;
 };

@@ -1,0 +1,130 @@
+// Numbers read where they stand in a line (TokenReader::nextInt64 and
+// nextDouble, the mesh readers' fast path) agree with finding the token
+// first and parsing it after (next + parseInt64 / parseDouble) on every
+// kind of token: the fast path may only be faster, never read otherwise.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/text.h"
+
+namespace meshtrace {
+namespace {
+
+// Tokens at and around every edge of the fast paths: digits only, up to
+// and past 18 digits and int64's range; signs; numbers run into other
+// characters; the forms from_chars takes for doubles (exponents, inf,
+// nan) and ones it stops inside.
+const std::vector<std::string> kTokens = {"0",
+                                          "7",
+                                          "007",
+                                          "42",
+                                          "500096",
+                                          "123456789012345678",
+                                          "1234567890123456789",
+                                          "9223372036854775807",
+                                          "9223372036854775808",
+                                          "99999999999999999999",
+                                          "+5",
+                                          "-3",
+                                          "+-3",
+                                          "--3",
+                                          "+",
+                                          "-",
+                                          "12x",
+                                          "x12",
+                                          "1.",
+                                          ".5",
+                                          "1.5",
+                                          "-0.013166238617716368",
+                                          "1.5e3",
+                                          "1.5e",
+                                          "1.5e+",
+                                          "1e-400",
+                                          "1e400",
+                                          "inf",
+                                          "-inf",
+                                          "nan",
+                                          "infinity",
+                                          "0x1A",
+                                          "1,5",
+                                          "3.3.3",
+                                          "1e5x",
+                                          "\x01",
+                                          "#",
+                                          "1#2"};
+
+// A line with `token` between the given spaces, then another token.
+std::string lineWith(const std::string& token, const std::string& before,
+                     const std::string& after) {
+  return before + token + after + "9";
+}
+
+TEST(TokenNumbers, InPlaceIntegersAgreeWithParsingTheFoundToken) {
+  for (const std::string& token : kTokens) {
+    for (const std::string& space : {std::string(" "), std::string("\t\r")}) {
+      const std::string line = lineWith(token, space, space);
+      text::TokenReader found(line), inPlace(line);
+      std::string_view word, seen;
+      ASSERT_TRUE(found.next(word));
+      std::int64_t expected = -1, got = -2;
+      const bool parses = text::parseInt64(word, expected);
+      const text::NumberToken read = inPlace.nextInt64(got, seen);
+      EXPECT_EQ(read == text::NumberToken::Read, parses) << "token '" << token << "'";
+      EXPECT_EQ(seen, word) << "token '" << token << "'";
+      if (parses) {
+        EXPECT_EQ(got, expected) << "token '" << token << "'";
+      }
+      // Both continue at the same place.
+      std::string_view nextFound, nextInPlace;
+      ASSERT_TRUE(found.next(nextFound));
+      ASSERT_TRUE(inPlace.next(nextInPlace));
+      EXPECT_EQ(nextFound, nextInPlace) << "token '" << token << "'";
+    }
+  }
+}
+
+TEST(TokenNumbers, InPlaceDoublesAgreeWithParsingTheFoundToken) {
+  for (const std::string& token : kTokens) {
+    for (const std::string& space : {std::string(" "), std::string("\t\v\f")}) {
+      const std::string line = lineWith(token, space, space);
+      text::TokenReader found(line), inPlace(line);
+      std::string_view word, seen;
+      ASSERT_TRUE(found.next(word));
+      double expected = -1.0, got = -2.0;
+      const bool parses = text::parseDouble(word, expected);
+      const text::NumberToken read = inPlace.nextDouble(got, seen);
+      EXPECT_EQ(read == text::NumberToken::Read, parses) << "token '" << token << "'";
+      EXPECT_EQ(seen, word) << "token '" << token << "'";
+      if (parses && !std::isnan(expected)) {
+        EXPECT_EQ(got, expected) << "token '" << token << "'";
+      }
+      if (parses && std::isnan(expected)) {
+        EXPECT_TRUE(std::isnan(got)) << "token '" << token << "'";
+      }
+      std::string_view nextFound, nextInPlace;
+      ASSERT_TRUE(found.next(nextFound));
+      ASSERT_TRUE(inPlace.next(nextInPlace));
+      EXPECT_EQ(nextFound, nextInPlace) << "token '" << token << "'";
+    }
+  }
+}
+
+TEST(TokenNumbers, ANumberAtTheLineEndIsReadAndThenTheLineEnds) {
+  text::TokenReader tokens("  12 3.5");
+  std::int64_t i = 0;
+  double d = 0.0;
+  std::string_view token;
+  ASSERT_EQ(tokens.nextInt64(i, token), text::NumberToken::Read);
+  EXPECT_EQ(i, 12);
+  ASSERT_EQ(tokens.nextDouble(d, token), text::NumberToken::Read);
+  EXPECT_EQ(d, 3.5);
+  EXPECT_EQ(tokens.nextInt64(i, token), text::NumberToken::LineEnded);
+  EXPECT_EQ(tokens.nextDouble(d, token), text::NumberToken::LineEnded);
+}
+
+}  // namespace
+}  // namespace meshtrace
