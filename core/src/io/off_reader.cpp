@@ -25,6 +25,7 @@ namespace meshtrace {
 namespace {
 // Meshes beyond this are refused rather than loaded into memory.
 constexpr std::uintmax_t kMaxOffBytes = std::uintmax_t{4} << 30;
+static_assert(kMaxOffBytes <= std::uintmax_t{1} << 32, "line offsets are held in 32 bits");
 // The shortest lines that can hold a vertex ("0 0 0\n") and a triangle
 // ("3 0 1 2\n"): counts needing more bytes than the file has are refused
 // before anything is reserved.
@@ -90,6 +91,13 @@ class OffParser {
     std::int64_t elements = 0;   // its non-empty lines
     std::size_t lineBefore = 0;  // the number of the line before its first
     std::int64_t firstElement = 0;
+    // Its non-empty lines, comments cut, as the count found them: the
+    // parse reads these instead of finding the lines a second time.
+    struct Line {
+      std::uint32_t begin, length;  // in text(); a piece never outgrows the file
+      std::uint32_t number;         // counted from the chunk's first line, from 1
+    };
+    std::vector<Line> nonEmpty;
     std::vector<TriangleIndices> triangles;
     std::vector<std::uint32_t> corners;  // of the face being read
     std::exception_ptr error;
@@ -201,11 +209,17 @@ class OffParser {
   }
 
   static void count(Chunk& c) {
-    c.loneCr = text::hasLoneCr(c.text());
-    text::LineReader lines(c.text(), c.loneCr);
+    const std::string_view text = c.text();
+    c.loneCr = text::hasLoneCr(text);
+    text::LineReader lines(text, c.loneCr);
     std::string_view line;
-    c.elements = 0;
-    while (lines.nextNonEmpty(line)) ++c.elements;
+    c.nonEmpty.clear();
+    while (lines.nextNonEmpty(line)) {
+      c.nonEmpty.push_back({static_cast<std::uint32_t>(line.data() - text.data()),
+                            static_cast<std::uint32_t>(line.size()),
+                            static_cast<std::uint32_t>(lines.lineNumber())});
+    }
+    c.elements = static_cast<std::int64_t>(c.nonEmpty.size());
     c.lines = lines.lineNumber();
   }
 
@@ -236,11 +250,12 @@ class OffParser {
   }
 
   void parseChunk(Chunk& c) {
-    text::LineReader lines(c.text(), c.loneCr);
-    std::string_view line;
-    for (std::int64_t e = c.firstElement; e < nv_ + nf_ && lines.nextNonEmpty(line); ++e) {
+    const std::string_view text = c.text();
+    std::int64_t e = c.firstElement;
+    for (auto it = c.nonEmpty.begin(); e < nv_ + nf_ && it != c.nonEmpty.end(); ++it, ++e) {
+      const std::string_view line = text.substr(it->begin, it->length);
       try {
-        const std::size_t lineNumber = c.lineBefore + lines.lineNumber();
+        const std::size_t lineNumber = c.lineBefore + it->number;
         if (e < nv_)
           mesh_.vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
         else
