@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <new>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 
 #include "common/load_progress.h"
@@ -89,6 +91,16 @@ std::optional<std::uint64_t> memoryLimit(const std::string& option) {
     std::fprintf(stderr, "error: --max-memory: %s\n", e.what());
     return std::nullopt;
   }
+}
+
+std::uint64_t peakResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    unsigned long long kb = 0;
+    if (std::sscanf(line.c_str(), "VmHWM: %llu kB", &kb) == 1) return kb * 1024;
+  }
+  return 0;
 }
 
 void printMemoryError(const std::filesystem::path& scene, const MemoryLimitError& e) {

@@ -31,6 +31,12 @@ void fitWorkersToAddressSpace();
 // error and returns nothing if it is not a size.
 std::optional<std::uint64_t> memoryLimit(const std::string& option);
 
+// The most resident memory the process has had (the kernel's VmHWM), or 0
+// where the kernel does not say. Unlike a parent's rusage of its child,
+// it counts the tool alone: a forked child's ru_maxrss also holds the
+// parent's resident memory at the fork.
+std::uint64_t peakResidentBytes();
+
 // Prints the error of a scene that needs more memory than it may use.
 void printMemoryError(const std::filesystem::path& scene, const MemoryLimitError& e);
 

@@ -89,6 +89,8 @@ bool renderToFile(const Scene& scene, const std::filesystem::path& out, const Op
       std::printf("memory planned: %s of the %s allowed (the BVH's build %s, the image %s)\n",
                   formatBytes(budget.planned()).c_str(), formatBytes(budget.limit()).c_str(),
                   formatBytes(bvhBytes).c_str(), formatBytes(pixelBytes).c_str());
+      if (const std::uint64_t peak = app::peakResidentBytes())
+        std::printf("peak resident memory so far: %s\n", formatBytes(peak).c_str());
       for (const std::string& s : leftOut(scene)) std::printf("left out: %s\n", s.c_str());
       if (const SceneBvhStats* bvh = intersector.bvhStats())
         for (const std::string& s : bvh->leftOut) std::printf("left out: %s\n", s.c_str());
