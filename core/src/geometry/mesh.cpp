@@ -2,13 +2,16 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <memory>
 #include <tuple>
 
 #include "meshtrace/geometry/triangle.h"
 #include "meshtrace/util/enum_names.h"
+#include "util/build_vector.h"
 
 namespace meshtrace {
 
@@ -53,20 +56,28 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
       return std::tie(middle, largest, triangle) < std::tie(o.middle, o.largest, o.triangle);
     }
   };
-  std::vector<Other> grouped(groupEnd.back());
+  std::vector<Other> grouped;
+  reserveOnLargePages(grouped, groupEnd.back());
+  grouped.resize(groupEnd.back());
   std::vector<std::uint32_t> fill(groupEnd.begin(), groupEnd.end() - 1);
   for (std::size_t i = 0; i < n; ++i) {
     if (triangleNormals[i] == Vec3(0.0)) continue;
     const TriangleIndices t = sorted(i);
     grouped[fill[t[0]]++] = {t[1], t[2], static_cast<std::uint32_t>(i)};
   }
-  for (std::size_t v = 0; v + 1 < groupEnd.size(); ++v) {
-    const auto first = grouped.begin() + groupEnd[v], last = grouped.begin() + groupEnd[v + 1];
-    std::sort(first, last);
-    for (auto it = first; it != last; ++it)
-      contributes[it->triangle] =
-          it == first || it[-1].middle != it->middle || it[-1].largest != it->largest;
-  }
+  // Groups are independent: sorted in parallel, each writing only the
+  // flags of its own triangles.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groupEnd.size() - 1, kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t v = r.begin(); v < r.end(); ++v) {
+                        const auto first = grouped.begin() + groupEnd[v];
+                        const auto last = grouped.begin() + groupEnd[v + 1];
+                        std::sort(first, last);
+                        for (auto it = first; it != last; ++it)
+                          contributes[it->triangle] = it == first || it[-1].middle != it->middle ||
+                                                      it[-1].largest != it->largest;
+                      }
+                    });
   return contributes;
 }
 
@@ -74,31 +85,56 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
 
 std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
                                              const std::vector<Vec3>& triangleNormals) {
-  std::vector<Vec3> normals(mesh.vertices.size(), Vec3(0.0));
+  std::vector<Vec3> normals;
+  reserveOnLargePages(normals, mesh.vertices.size());
+  normals.assign(mesh.vertices.size(), Vec3(0.0));
   const std::vector<char> contributes = contributingTriangles(mesh, triangleNormals);
   // The corner angles (three atan2 a triangle, most of the work) are taken
-  // in parallel, a chunk at a time; the sums stay in triangle order, so the
-  // normals do not depend on the thread count.
-  constexpr std::size_t kChunk = 1 << 16;
-  std::vector<Vec3> angles(std::min(mesh.triangles.size(), kChunk));
-  for (std::size_t begin = 0; begin < mesh.triangles.size(); begin += kChunk) {
-    const std::size_t end = std::min(begin + kChunk, mesh.triangles.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          if (!contributes[i]) continue;
-                          const TriangleIndices& t = mesh.triangles[i];
-                          angles[i - begin] = cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]],
-                                                           mesh.vertices[t[2]]);
-                        }
-                      });
-    for (std::size_t i = begin; i < end; ++i) {
-      if (!contributes[i]) continue;
-      const TriangleIndices& t = mesh.triangles[i];
-      const Vec3& w = angles[i - begin];
-      for (int k = 0; k < 3; ++k) normals[t[k]] += w[k] * triangleNormals[i];
-    }
-  }
+  // in parallel, a chunk of triangles at a time, while the chunks before
+  // are summed into the normals in triangle order: the sums, and so the
+  // normals, do not depend on the thread count.
+  struct Chunk {
+    std::size_t begin = 0, end = 0;
+    std::vector<Vec3> angles;
+  };
+  constexpr std::size_t kChunk = std::size_t{1} << 14;
+  const std::size_t triangles = mesh.triangles.size();
+  std::size_t next = 0;
+  tbb::parallel_pipeline(
+      static_cast<std::size_t>(2 * tbb::this_task_arena::max_concurrency() + 1),
+      tbb::make_filter<void, std::shared_ptr<Chunk>>(tbb::filter_mode::serial_in_order,
+                                                     [&](tbb::flow_control& fc) {
+                                                       if (next >= triangles) {
+                                                         fc.stop();
+                                                         return std::shared_ptr<Chunk>();
+                                                       }
+                                                       auto c = std::make_shared<Chunk>();
+                                                       c->begin = next;
+                                                       c->end = next =
+                                                           std::min(next + kChunk, triangles);
+                                                       return c;
+                                                     }) &
+          tbb::make_filter<std::shared_ptr<Chunk>, std::shared_ptr<Chunk>>(
+              tbb::filter_mode::parallel,
+              [&](std::shared_ptr<Chunk> c) {
+                c->angles.resize(c->end - c->begin);
+                for (std::size_t i = c->begin; i < c->end; ++i) {
+                  if (!contributes[i]) continue;
+                  const TriangleIndices& t = mesh.triangles[i];
+                  c->angles[i - c->begin] =
+                      cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+                }
+                return c;
+              }) &
+          tbb::make_filter<std::shared_ptr<Chunk>, void>(
+              tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Chunk>& c) {
+                for (std::size_t i = c->begin; i < c->end; ++i) {
+                  if (!contributes[i]) continue;
+                  const TriangleIndices& t = mesh.triangles[i];
+                  const Vec3& w = c->angles[i - c->begin];
+                  for (int k = 0; k < 3; ++k) normals[t[k]] += w[k] * triangleNormals[i];
+                }
+              }));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t v = r.begin(); v < r.end(); ++v) {
@@ -124,6 +160,7 @@ Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Mat
         a.extend(b);
         return a;
       });
+  reserveOnLargePages(triangleNormals_, data_.triangles.size());
   triangleNormals_.resize(data_.triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data_.triangles.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {

@@ -2,12 +2,15 @@
 
 #include <string>
 
+#include "util/build_vector.h"
+
 namespace meshtrace::mesh_arrays {
 
 void sizeVertices(MeshData& mesh, MemoryBudget& budget, std::size_t count,
                   const std::filesystem::path& file) {
   budget.reserve(count * sizeof(Vec3), "load",
                  "the " + std::to_string(count) + " vertices of " + file.filename().string());
+  reserveOnLargePages(mesh.vertices, count);
   mesh.vertices.resize(count);
 }
 
@@ -17,7 +20,7 @@ void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
   budget.reserve(capacity * sizeof(TriangleIndices), "load",
                  "the triangles of " + file.filename().string() + " (room for " +
                      std::to_string(capacity) + ")");
-  mesh.triangles.reserve(capacity);
+  reserveOnLargePages(mesh.triangles, capacity);
   budget.release(old * sizeof(TriangleIndices));
 }
 

@@ -2,6 +2,8 @@
 
 #include <sys/mman.h>
 
+#include <cstdint>
+
 namespace meshtrace {
 
 namespace {
@@ -18,6 +20,13 @@ void* allocateLarge(std::size_t bytes, std::size_t align) {
   void* p = ::operator new (rounded, std::align_val_t{kLargePageBytes});
   madvise(p, rounded, MADV_HUGEPAGE);
   return p;
+}
+
+void offerHugePages(void* p, std::size_t bytes) noexcept {
+  const auto begin = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t first = (begin + kLargePageBytes - 1) / kLargePageBytes * kLargePageBytes;
+  const std::uintptr_t last = (begin + bytes) / kLargePageBytes * kLargePageBytes;
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 }
 
 void freeLarge(void* p, std::size_t bytes, std::size_t align) noexcept {
