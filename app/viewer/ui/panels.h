@@ -68,6 +68,8 @@ inline constexpr float kPaneSplitterHeight = 6.0f;
 // path, made absolute; a file there is replaced only with Existing::Replace,
 // else the user is asked (drawOverwriteQuestion, once a frame).
 void save(ViewerState& state, RenderDisplay& display, SaveKind kind, Existing existing);
+// Shows the outcome of a layers save that has finished in the background.
+void collectLayersSave(ViewerState& state);
 void drawOverwriteQuestion(ViewerState& state, RenderDisplay& display);
 // New absolute paths for the saves of `scene`, in folders the user may
 // write to outside the course's data (save_target.h).

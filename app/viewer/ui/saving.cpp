@@ -33,14 +33,24 @@ void rescanFor(ViewerState& state, const fs::path& saved) {
 
 // The render on screen with each layer, written as raytrace writes an EXR:
 // through renderLayers, by the displayed scene's intersector, through the
-// displayed camera.
+// displayed camera. It is a render of its own, so it runs in the
+// background (the scene and camera are kept for it); another save of
+// layers cancels it, and its file is then never made (OutputFile).
 void saveLayers(ViewerState& state, const RenderDisplay& display, const fs::path& target) {
-  const std::shared_ptr<const RenderScene>& scene = display.renderScene();
+  std::shared_ptr<const RenderScene> scene = display.renderScene();
   if (!scene || scene->preview)
     throw std::runtime_error("not saved: the scene is still being prepared");
-  writeExr(renderLayers(scene->prepared->intersector(), display.camera(), display.threads()),
-           target);
-  setMessage(state, "saved the layers to " + target.string(), false);
+  state.layersSave->start(
+      [scene, camera = display.camera(), threads = display.threads(),
+       target](TaskContext<std::string>& task) {
+        ExrImage layers = renderLayers(scene->prepared->intersector(), camera, threads);
+        if (task.cancelled()) return;
+        task.setPhase("writing " + target.string());
+        writeExr(layers, target);
+        task.publish("saved the layers to " + target.string());
+      },
+      "rendering the layers for " + target.string());
+  setMessage(state, "saving the layers to " + target.string() + " ...", false);
 }
 
 std::string pathOf(const ViewerState& state, SaveKind kind) {
@@ -126,6 +136,15 @@ void proposeSavePaths(ViewerState& state, const fs::path& scene) {
       (folder == absoluteOf(scene.parent_path().string()) ? scene.parent_path() / name
                                                           : folder / name)
           .string();
+}
+
+void collectLayersSave(ViewerState& state) {
+  BackgroundTask<std::string>& task = *state.layersSave;
+  for (const std::string& saved : task.take()) setMessage(state, saved, false);
+  if (!task.busy() && !task.error().empty()) {
+    setMessage(state, "not saved: " + task.error(), true);
+    task.cancel();  // reported once
+  }
 }
 
 }  // namespace meshtrace::viewer

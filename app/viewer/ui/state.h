@@ -183,6 +183,10 @@ struct ViewerState {
   TimingStats timing;
   LiveReload reload;
   std::string savePath, layersPath, screenshotPath, sceneSavePath;  // absolute, proposed new
+  // The EXR layers being rendered and written (saving.cpp): a render of
+  // every layer of the image, too long for a frame. Its result is the
+  // message to show.
+  std::unique_ptr<BackgroundTask<std::string>> layersSave;
   std::optional<OverwriteQuestion> overwrite;
   std::string screenshotRequest;  // set by the UI, served after the frame is drawn
   std::string message;            // last action's result

@@ -60,6 +60,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, const std::filesystem::path& 
   state_.crosscheck.task = std::make_unique<BackgroundTask<CrossCheckState::Result>>(wake);
   state_.reference.task = std::make_unique<BackgroundTask<PassErrors::Comparison>>(wake);
   state_.ab.task = std::make_unique<BackgroundTask<AbComparison>>(wake);
+  state_.layersSave = std::make_unique<BackgroundTask<std::string>>(wake);
   applyOptions();
   sync();  // start loading now, not after the first frame's GL set-up
 }
@@ -276,6 +277,7 @@ void ViewerApp::runBackgroundWork() {
     startCrossCheck(state_);
   updateReference(state_, display_);
   updateAb(state_, display_);
+  collectLayersSave(state_);
 }
 
 void ViewerApp::sync() {
@@ -427,7 +429,7 @@ bool ViewerApp::idle() const {
   if (abStage_ == AbStage::RenderingB && state_.session.loaded() && scenes.failure.empty())
     return false;
   if (state_.session.opening() || scenes.pipeline->busy() || state_.crosscheck.task->busy() ||
-      state_.reference.task->busy() || state_.ab.task->busy())
+      state_.reference.task->busy() || state_.ab.task->busy() || state_.layersSave->busy())
     return false;
   if (!state_.session.loaded() || !scenes.failure.empty()) return true;
   if (!scenes.render || display_.renderScene() != scenes.render) return false;

@@ -1,9 +1,8 @@
 #include "meshtrace/render/layers.h"
 
-#include <tbb/parallel_for.h>
-
 #include "meshtrace/render/inspect.h"
 #include "meshtrace/render/render.h"
+#include "util/parallel_tiles.h"
 
 namespace meshtrace {
 
@@ -34,29 +33,31 @@ ExrImage renderLayers(const SceneIntersector& intersector, const Camera& camera,
   std::vector<float>& beta = floats("barycentric.B");
   std::vector<float>& gamma = floats("barycentric.C");
   std::vector<std::uint32_t>& cost = uints("traversalCost");
-  tbb::parallel_for(0, h, [&](int row) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(row) * w + x;
-      const int y = flippedRow(row, h);
-      for (int c = 0; c < 3; ++c) (*rgb[c])[i] = static_cast<float>(color.pixels[i][c]);
-      const PixelProbe probe = probePixel(intersector, camera, x, y);
-      cost[i] = probe.cost;
-      if (!probe.hit()) {
-        z[i] = std::numeric_limits<float>::infinity();
-        object[i] = triangle[i] = kNoHitId;
-        continue;
+  // Probes go over the image as the render does: in tiles, on `threads`.
+  forEachTile(w, h, 16, threads, [&](auto rows, auto cols, Counters&) {
+    for (int row = rows.begin(); row < rows.end(); ++row)
+      for (int x = cols.begin(); x < cols.end(); ++x) {
+        const std::size_t i = static_cast<std::size_t>(row) * w + x;
+        const int y = flippedRow(row, h);
+        for (int c = 0; c < 3; ++c) (*rgb[c])[i] = static_cast<float>(color.pixels[i][c]);
+        const PixelProbe probe = probePixel(intersector, camera, x, y);
+        cost[i] = probe.cost;
+        if (!probe.hit()) {
+          z[i] = std::numeric_limits<float>::infinity();
+          object[i] = triangle[i] = kNoHitId;
+          continue;
+        }
+        z[i] = probe.depth;
+        const Vec3 point = camera.primaryRay(x, y).at(probe.depth);
+        for (int c = 0; c < 3; ++c) {
+          (*n[c])[i] = probe.normal[c];
+          (*p[c])[i] = static_cast<float>(point[c]);
+        }
+        object[i] = static_cast<std::uint32_t>(probe.object);
+        triangle[i] = probe.kind == ObjectKind::Mesh ? probe.triangle : kNoHitId;
+        beta[i] = probe.beta;
+        gamma[i] = probe.gamma;
       }
-      z[i] = probe.depth;
-      const Vec3 point = camera.primaryRay(x, y).at(probe.depth);
-      for (int c = 0; c < 3; ++c) {
-        (*n[c])[i] = probe.normal[c];
-        (*p[c])[i] = static_cast<float>(point[c]);
-      }
-      object[i] = static_cast<std::uint32_t>(probe.object);
-      triangle[i] = probe.kind == ObjectKind::Mesh ? probe.triangle : kNoHitId;
-      beta[i] = probe.beta;
-      gamma[i] = probe.gamma;
-    }
   });
   return out;
 }

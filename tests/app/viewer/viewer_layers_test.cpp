@@ -63,6 +63,15 @@ void expectSameLayers(const ExrImage& a, const ExrImage& b) {
   }
 }
 
+// Saves and waits for the save, which renders in the background, to end.
+void saveAndWait(ViewerApp& app, SaveKind kind) {
+  ViewerState& state = app.state();
+  save(state, app.display(), kind, Existing::Refuse);
+  for (int i = 0; i < 6000 && state.layersSave->busy(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  collectLayersSave(state);
+}
+
 ViewerOptions bareOptions() {
   ViewerOptions o;
   o.noDefaultDirs = true;
@@ -81,6 +90,11 @@ TEST(SaveLayers, WritesTheExrRaytraceWritesForTheSceneOnScreen) {
   ASSERT_TRUE(state.session.loaded()) << state.session.error();
   state.layersPath = (dir / "viewer.exr").string();
   save(state, app.display(), SaveKind::Layers, Existing::Refuse);
+  // The layers are a render of their own: the frame that asked goes on.
+  test::expectMentions(state.message, {"saving the layers to"});
+  for (int i = 0; i < 6000 && state.layersSave->busy(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  collectLayersSave(state);
   test::expectMentions(state.message, {"saved the layers to", (dir / "viewer.exr").string()});
   EXPECT_FALSE(state.messageIsError);
 
@@ -103,7 +117,7 @@ TEST(SaveLayers, WritesTheExrRaytraceWritesForTheSceneOnScreen) {
 
   // "Save render" to a .exr name writes the same file.
   state.savePath = (dir / "render.exr").string();
-  save(state, app.display(), SaveKind::Render, Existing::Refuse);
+  saveAndWait(app, SaveKind::Render);
   expectSameLayers(readExr(dir / "render.exr"), raytraced);
 
   // Never over an existing file without asking.

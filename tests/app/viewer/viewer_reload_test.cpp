@@ -20,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path testScenes() { return test::viewerTestScenes(); }
-
 // A copy of the test scenes to edit.
 fs::path editableScenes(const std::string& name) {
   return test::copyOfViewerTestScenes("viewer_reload_" + name);
