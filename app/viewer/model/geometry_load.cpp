@@ -53,9 +53,12 @@ LoadedScene loadGeometry(const std::filesystem::path& file) {
   // A bare mesh is read as the scene raytrace makes for it, as if that
   // scene were saved beside the mesh.
   std::filesystem::path sceneFile = file;
+  MemoryBudget budget(defaultMemoryLimit());
+  MeshSource meshes;  // a bare mesh's arrays, read once to frame it
   if (isBareMesh(file)) {
-    MemoryBudget budget(defaultMemoryLimit());
-    out.generatedText = meshSceneText(file, budget);
+    FramedMesh framed = frameMesh(file, budget);
+    out.generatedText = std::move(framed.text);
+    meshes = std::move(framed.meshes);
     text = out.generatedText;
     sceneFile = meshScenePath(file);
   }
@@ -67,9 +70,9 @@ LoadedScene loadGeometry(const std::filesystem::path& file) {
     const std::vector<bool> visible(flat.size(), true);
     out.scene = std::make_shared<const Scene>(parseScene(
         rewriteMeshes(text, flat, visible, sceneFile.parent_path(), sceneFile.parent_path()),
-        sceneFile));
+        sceneFile, budget, meshes));
   } else {
-    auto scene = std::make_shared<Scene>(loadScene(file));
+    auto scene = std::make_shared<Scene>(loadScene(file, budget));
     out.fileModes.clear();
     for (Mesh& m : scene->meshes) {
       out.fileModes.push_back(m.shading());

@@ -1,6 +1,8 @@
 #include "meshtrace/io/mesh_scene.h"
 
+#include <atomic>
 #include <cmath>
+#include <memory>
 
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
@@ -47,21 +49,40 @@ std::string meshSceneText(const Aabb& bounds, const std::string& meshName) {
          meshName + " PHONG  0.2 0.2 0.2  0.7 0.6 0.5  0.5 0.5 0.5  40  0\n";
 }
 
-std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budget) {
+FramedMesh frameMesh(const std::filesystem::path& mesh, MemoryBudget& budget) {
   const std::string name = mesh.filename().string();
   if (!isSceneWord(name))
     throw InputError::inFile(mesh,
                              "a scene's mesh line cannot name this file: scene files separate "
                              "words by white space and start comments with '#'; rename the "
                              "mesh, or link it under a name without them");
+  // The arrays, until the scene's mesh line takes them.
+  struct Held {
+    MeshData data;
+    std::atomic<bool> taken{false};
+  };
+  auto held = std::make_shared<Held>();
+  held->data = readMesh(mesh, budget);
   Aabb bounds;
-  {
-    // Its own plan: this copy is freed before the scene loads its own.
-    MemoryBudget probe(budget.limit());
-    for (const Vec3& v : readMesh(mesh, probe).vertices) bounds.extend(v);
-  }
+  for (const Vec3& v : held->data.vertices) bounds.extend(v);
   if (bounds.empty()) throw InputError::inFile(mesh, "the mesh has no vertices to frame");
-  return meshSceneText(bounds, name);
+  // The mesh line names the file beside the scene (meshScenePath): the
+  // first line that names it gets the arrays read here; anything else is
+  // read from its file.
+  const auto key = [](const std::filesystem::path& p) {
+    return std::filesystem::absolute(p).lexically_normal();
+  };
+  return {meshSceneText(bounds, name),
+          [held, file = key(mesh), key](const std::filesystem::path& path, MemoryBudget& b) {
+            if (key(path) != file || held->taken.exchange(true)) return readMesh(path, b);
+            return std::move(held->data);
+          }};
+}
+
+std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budget) {
+  // Its own plan: the arrays are freed before anything else loads.
+  MemoryBudget probe(budget.limit());
+  return frameMesh(mesh, probe).text;
 }
 
 std::filesystem::path meshScenePath(const std::filesystem::path& mesh) {
@@ -70,7 +91,8 @@ std::filesystem::path meshScenePath(const std::filesystem::path& mesh) {
 }
 
 Scene loadMeshAsScene(const std::filesystem::path& mesh, MemoryBudget& budget) {
-  return parseScene(meshSceneText(mesh, budget), meshScenePath(mesh), budget);
+  const FramedMesh framed = frameMesh(mesh, budget);
+  return parseScene(framed.text, meshScenePath(mesh), budget, framed.meshes);
 }
 
 }  // namespace meshtrace

@@ -34,8 +34,9 @@ struct MeshLine {
 
 class SceneParser {
  public:
-  SceneParser(text::TokenStream& words, const std::filesystem::path& file, MemoryBudget& budget)
-      : file_(file), words_(words), budget_(budget) {}
+  SceneParser(text::TokenStream& words, const std::filesystem::path& file, MemoryBudget& budget,
+              const MeshSource& meshes)
+      : file_(file), words_(words), budget_(budget), meshes_(meshes) {}
 
   Scene parse() {
     Scene scene;
@@ -236,7 +237,7 @@ class SceneParser {
     tbb::parallel_for(std::size_t{0}, lines.size(), [&](std::size_t i) {
       const MeshLine& m = lines[i];
       try {
-        MeshData data = readMesh(m.file, budget_);
+        MeshData data = meshes_ ? meshes_(m.file, budget_) : readMesh(m.file, budget_);
         budget_.reserve(normalsBytes(data, m.shading), "load",
                         "the normals of " + m.file.filename().string());
         if (LoadObserver* observer = budget_.loadObserver()) observer->phase(m.file, "normals");
@@ -303,15 +304,21 @@ class SceneParser {
   const std::filesystem::path& file_;
   text::TokenStream& words_;
   MemoryBudget& budget_;
+  const MeshSource& meshes_;             // empty: readMesh
   std::vector<std::size_t> lightLines_;  // the line of each light
   std::string entity_;                   // the keyword being read, for messages
   std::size_t entityLine_ = 0;
 };
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget) {
+Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget,
+                 const MeshSource& meshes) {
   text::TokenStream words(text, file);
-  return SceneParser(words, file, budget).parse();
+  return SceneParser(words, file, budget, meshes).parse();
+}
+
+Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget) {
+  return parseScene(text, file, budget, MeshSource());
 }
 
 Scene parseScene(std::string_view text, const std::filesystem::path& file) {
@@ -322,7 +329,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
 Scene loadScene(const std::filesystem::path& file, MemoryBudget& budget) {
   text::FileSource source(file, kMaxSceneBytes);
   text::TokenStream words(source);
-  return SceneParser(words, file, budget).parse();
+  return SceneParser(words, file, budget, MeshSource()).parse();
 }
 
 Scene loadScene(const std::filesystem::path& file) {

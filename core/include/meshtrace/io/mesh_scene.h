@@ -9,6 +9,7 @@
 #include "meshtrace/geometry/aabb.h"
 #include "meshtrace/geometry/scene.h"
 #include "meshtrace/io/memory_budget.h"
+#include "meshtrace/io/scene_parser.h"
 
 namespace meshtrace {
 
@@ -19,8 +20,18 @@ bool isSceneFile(const std::filesystem::path& file);
 // mesh line naming `meshName` (relative to where the text is saved).
 std::string meshSceneText(const Aabb& bounds, const std::string& meshName);
 
-// The .sce text for `mesh`, read (readMesh) for its box, to be saved beside
-// it. Throws InputError for a bad or empty mesh.
+// A bare mesh read once (readMesh, within `budget`): the .sce text that
+// frames its box, and a source that hands its arrays to that text's mesh
+// line (parseScene), so that the file is not read a second time. Throws
+// InputError for a bad or empty mesh, or a name a scene cannot hold.
+struct FramedMesh {
+  std::string text;
+  MeshSource meshes;
+};
+FramedMesh frameMesh(const std::filesystem::path& mesh, MemoryBudget& budget);
+
+// The .sce text for `mesh`, read for its box, to be saved beside it
+// (frameMesh's text; the arrays are freed).
 std::string meshSceneText(const std::filesystem::path& mesh, MemoryBudget& budget);
 
 // Where the text of meshSceneText(mesh, ...) belongs: <stem>.sce beside

@@ -1,6 +1,7 @@
 #pragma once
 // Reader for the `.sce` scene format (see SCENE_FORMAT in the README).
 #include <filesystem>
+#include <functional>
 #include <string_view>
 
 #include "meshtrace/geometry/scene.h"
@@ -17,9 +18,17 @@ Scene loadScene(const std::filesystem::path& file, MemoryBudget& budget);
 // With a budget of defaultMemoryLimit().
 Scene loadScene(const std::filesystem::path& file);
 
+// Where the mesh lines of a scene get their arrays: readMesh(file, budget)
+// unless a caller already holds a mesh's arrays (a bare mesh read once to
+// frame it, mesh_scene.h).
+using MeshSource = std::function<MeshData(const std::filesystem::path&, MemoryBudget&)>;
+
 // Parses scene text that claims to come from `file` (used for messages and
 // for resolving mesh paths).
 Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget);
+// The same, the meshes' arrays taken from `meshes`.
+Scene parseScene(std::string_view text, const std::filesystem::path& file, MemoryBudget& budget,
+                 const MeshSource& meshes);
 // With a budget of defaultMemoryLimit().
 Scene parseScene(std::string_view text, const std::filesystem::path& file);
 
