@@ -32,4 +32,17 @@ void Texture::upload(const std::uint8_t* rgba, int x0, int y0, int x1, int y1) {
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 
+std::vector<std::unique_ptr<Texture>> textureKinds() {
+  std::vector<std::unique_ptr<Texture>> kinds;
+  const std::uint8_t white[4 * 9] = {255, 255, 255, 255};
+  for (const int width : {1, 3})
+    for (const int height : {1, 3}) {
+      auto t = std::make_unique<Texture>();
+      t->resize(width, height);
+      t->uploadAll(white);
+      kinds.push_back(std::move(t));
+    }
+  return kinds;
+}
+
 }  // namespace meshtrace::gl

@@ -1,6 +1,8 @@
 #pragma once
 // An RGBA8 texture the viewer draws images with, updated in rectangles.
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace meshtrace::gl {
 
@@ -27,5 +29,13 @@ class Texture {
   unsigned id_ = 0;
   int width_ = 0, height_ = 0;
 };
+
+// A small texture of each kind that decides which shader the software
+// rasteriser (llvmpipe) compiles to draw an image: sides a power of two or
+// not, across and down. Drawn once when the window opens, they have those
+// shaders compiled there, rather than in the frame that first shows a
+// scene's image (where a compile, with no shader cache yet, is longer than
+// a frame may take).
+std::vector<std::unique_ptr<Texture>> textureKinds();
 
 }  // namespace meshtrace::gl

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "viewer/model/camera_control.h"
 #include "meshtrace/io/reference_lookup.h"
+#include "viewer/model/camera_control.h"
 #include "viewer/ui/panels.h"
 
 namespace meshtrace::viewer {
@@ -38,12 +38,7 @@ void rememberScene(ViewerState& state) {
 }
 
 void saveSettingsIfKept(ViewerState& state) {
-  if (state.settingsPath.empty()) return;
-  try {
-    saveSettings(state.settings, state.settingsPath);
-  } catch (const std::exception& e) {
-    setMessage(state, std::string("settings not saved: ") + e.what(), true);
-  }
+  if (!state.settingsPath.empty()) state.settingsWriter.save(state.settings, state.settingsPath);
 }
 
 void openScene(ViewerState& state, const std::filesystem::path& file) {

@@ -19,10 +19,6 @@ namespace meshtrace::viewer {
 namespace {
 constexpr float kZoomStep = 1.25f;  // per wheel notch
 
-ImTextureID textureId(const gl::Texture& t) {
-  return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t.id()));
-}
-
 ImVec2 screen(const ImageViewport& v, double col, double row) {
   const auto [x, y] = v.toScreen(col, row);
   return ImVec2(x, y);

@@ -1,11 +1,15 @@
 #pragma once
 // The viewer's panels, each drawn by one function into the current ImGui
 // window, and the actions they share.
+#include <imgui.h>
+
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "viewer/gl/texture.h"
 #include "viewer/model/projection.h"
 #include "viewer/model/shortcuts.h"
 #include "viewer/ui/render_display.h"
@@ -16,6 +20,11 @@ struct ImVec2;
 
 namespace meshtrace::viewer {
 
+// How ImGui names a texture of ours.
+inline ImTextureID textureId(const gl::Texture& t) {
+  return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(t.id()));
+}
+
 // Actions (actions.cpp).
 void openScene(ViewerState& state, const std::filesystem::path& file);
 void addFolder(ViewerState& state, const std::filesystem::path& dir, const std::string& title);
@@ -25,7 +34,8 @@ void setMessage(ViewerState& state, const std::string& message, bool error);
 // Puts the open scene first among the recent ones and saves the settings
 // (when the app keeps any).
 void rememberScene(ViewerState& state);
-// Writes the settings to state.settingsPath, if the app keeps them.
+// Has the settings written to state.settingsPath, if the app keeps them
+// (in the background: SettingsWriter; a failure shows on a later frame).
 void saveSettingsIfKept(ViewerState& state);
 // The message line: `before` (if any) and the scene's warnings, shown as a
 // warning; just `before` when there are none.

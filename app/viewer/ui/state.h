@@ -27,6 +27,7 @@
 #include "viewer/model/scene_pipeline.h"
 #include "viewer/model/session.h"
 #include "viewer/model/settings.h"
+#include "viewer/model/settings_writer.h"
 #include "viewer/model/views.h"
 #include "viewer/ui/render_display.h"
 
@@ -201,8 +202,9 @@ struct ViewerState {
   // read or written.
   ViewerSettings settings;
   std::filesystem::path settingsPath;
-  bool settingsChanged = false;  // and not yet written
-  std::string bookmarkName;      // the camera panel's field
+  SettingsWriter settingsWriter;  // writes `settings` to settingsPath
+  bool settingsChanged = false;   // and not yet written
+  std::string bookmarkName;       // the camera panel's field
   // The command line's settings that apply to the scene (meshes, pixel,
   // reference) wait for it to load; what they name that it lacks is listed
   // here (a headless run then fails).
