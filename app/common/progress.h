@@ -9,6 +9,10 @@
 
 namespace meshtrace::app {
 
+// The help text of --quiet, the same in every tool.
+inline constexpr const char* kQuietHelp =
+    "No progress line for --all, --report or a large mesh loading (shown on a terminal)";
+
 // Turns progress lines off (--quiet) or back on; they are on by default
 // where stderr is a terminal.
 void setProgressShown(bool shown);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/batch.h"
+#include "common/progress.h"
 #include "meshtrace/io/memory_budget.h"
 #include "meshtrace/render/render.h"
 
@@ -53,7 +54,10 @@ int main(int argc, char** argv) {
   cli.add_option("args", args, "SCENE.sce OUT.png, or with --all: [DIR] [OUTDIR]");
   std::string maxMemory;
   cli.add_option("--max-memory", maxMemory, app::kMaxMemoryHelp);
+  bool quiet = false;
+  cli.add_flag("--quiet", quiet, app::kQuietHelp);
   CLI11_PARSE(cli, argc, argv);
+  if (quiet) app::setProgressShown(false);
   app::fitWorkersToAddressSpace();
   const std::optional<std::uint64_t> memoryLimit = app::memoryLimit(maxMemory);
   if (!memoryLimit) return 2;

@@ -154,9 +154,7 @@ int main(int argc, char** argv) {
                  "Merge the --report folders of every share of a run (given as args) into one "
                  "report in DIR");
   bool quiet = false;
-  cli.add_flag(
-      "--quiet", quiet,
-      "No progress line for --all, --report or a large mesh loading (shown on a terminal)");
+  cli.add_flag("--quiet", quiet, app::kQuietHelp);
   bool printScene = false;
   cli.add_flag("--print-scene", printScene,
                "Print the .sce a bare MESH file renders as (save it beside the mesh to edit it)");

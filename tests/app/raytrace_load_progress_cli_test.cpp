@@ -30,9 +30,9 @@ struct LargeMeshScene {
     test::writeFile(scene, test::kCameraLine + "light 0 0 10 1 1 1\nmesh knot.ply PHONG " +
                                test::kMaterial + "\n");
   }
-  std::string command(const std::string& options) const {
-    return test::raytraceTool().string() + " " + options + " " + scene.string() + " " +
-           (dir / "out.png").string();
+  std::string command(const std::string& options,
+                      const std::filesystem::path& tool = test::raytraceTool()) const {
+    return tool.string() + " " + options + " " + scene.string() + " " + (dir / "out.png").string();
   }
 };
 
@@ -57,6 +57,19 @@ TEST(RaytraceLoadProgress, IsQuietWithQuietOnATerminal) {
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   EXPECT_NE(r.out.find("loaded "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("loading"), std::string::npos) << r.out;
+}
+
+// debug_aabb loads scenes the same way, and takes --quiet too.
+TEST(RaytraceLoadProgress, DebugAabbShowsTheLineAndIsQuietWithQuiet) {
+  const LargeMeshScene large;
+  const auto shown = test::runOnTerminal(large.command("", test::debugAabbTool()), large.dir);
+  ASSERT_TRUE(shown.exited && shown.exitCode == 0) << test::describe(shown);
+  EXPECT_NE(shown.out.find("loading knot.ply: "), std::string::npos) << shown.out;
+  const auto quiet =
+      test::runOnTerminal(large.command("--quiet", test::debugAabbTool()), large.dir);
+  ASSERT_TRUE(quiet.exited && quiet.exitCode == 0) << test::describe(quiet);
+  EXPECT_NE(quiet.out.find("loaded "), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("loading"), std::string::npos) << quiet.out;
 }
 
 TEST(RaytraceLoadProgress, IsQuietWhenNotATerminal) {
