@@ -53,7 +53,14 @@ void makeScenes(const fs::path& dir) {
   std::string meshes = "camera 2 2 4  0.5 0.5 0.5  0 1 0  50 8 6\nlight 3 5 4  1 1 1\n";
   for (const auto& e : fs::directory_iterator(MESHTRACE_FUZZ_MESHES)) {
     if (e.path().extension() != ".off") continue;
-    fs::copy_file(e.path(), dir / e.path().filename());
+    // A failure here is the harness's, not the tool's: say what it was.
+    std::error_code ec;
+    fs::copy_file(e.path(), dir / e.path().filename(), ec);
+    if (ec) {
+      std::fprintf(stderr, "harness: cannot copy %s into %s: %s\n", e.path().c_str(), dir.c_str(),
+                   ec.message().c_str());
+      std::abort();
+    }
     meshes += "mesh " + e.path().filename().string() +
               " PHONG  0.2 0.2 0.2  0.6 0.5 0.4  0.3 0.3 0.3  20 0.2\n";
   }
