@@ -42,14 +42,18 @@ std::vector<std::string> withArgs(std::vector<std::string> options,
   return options;
 }
 
-// "memory planned: ... (the BVH's build 15 MB, ...)": the build's plan in bytes.
-double plannedBuildBytes(const std::string& out) {
-  const std::size_t at = out.find("the BVH's build ");
+// The bytes --stats prints after `label` in megabytes ("the BVH's build
+// 15 MB"), or -1 where the output does not have it.
+double statsBytes(const std::string& out, const std::string& label) {
+  const std::size_t at = out.find(label);
   if (at == std::string::npos) return -1.0;
   double mb = 0.0;
-  std::sscanf(out.c_str() + at, "the BVH's build %lf MB", &mb);
+  std::sscanf(out.c_str() + at + label.size(), "%lf MB", &mb);
   return mb * 1048576.0;
 }
+
+// "memory planned: ... (the BVH's build 15 MB, ...)": the build's plan.
+double plannedBuildBytes(const std::string& out) { return statsBytes(out, "the BVH's build "); }
 
 // Each phase refuses before it allocates: the mesh arrays while they load
 // (about 5 MB), the BVH before it is built (planned at 15 MB).
@@ -80,11 +84,7 @@ TEST(RaytraceMemory, RefusesAMaxMemoryThatIsNoSize) {
 // kernel's count; a parent's rusage of a forked child would also hold the
 // test process's memory at the fork).
 double peakResidentBytes(const std::string& out) {
-  const std::size_t at = out.find("peak resident memory so far: ");
-  if (at == std::string::npos) return -1.0;
-  double mb = 0.0;
-  std::sscanf(out.c_str() + at, "peak resident memory so far: %lf MB", &mb);
-  return mb * 1048576.0;
+  return statsBytes(out, "peak resident memory so far: ");
 }
 
 // The plan of the BVH's build covers what the build adds to the run's
