@@ -16,7 +16,7 @@ namespace meshtrace::formats {
 void registerOpenMeshFormats();
 
 // Reads a mesh with the OpenMesh reader of its extension, polygons
-// fan-triangulated as OFF's are. Only the faces' corners are taken: no
+// triangulated as OFF's are (polygon.h). Only the faces' corners are taken: no
 // topology is built, so a non-manifold mesh keeps every face. STL lists
 // each triangle's corners apart; its reader merges equal points, so the
 // vertices are shared as in an indexed mesh. Throws InputError naming the

@@ -233,7 +233,7 @@ TEST(RaytraceMemory, ReadsPastAHundredMegabyteLineInLittleMemory) {
   test::expectMentions(r.err, {"long.sce:3", "unknown keyword 'bogus'"});
 }
 
-// One face of 50 million corners over 3 vertices fanned into 50 million
+// One face of 50 million corners over 3 vertices, cut into 50 million
 // triangles (5.8 GB with their BVH): a polygon lists each vertex once, so
 // the face is refused at its line, and the 100 MB line costs its own size.
 TEST(RaytraceMemory, RefusesAFaceOfMoreCornersThanVertices) {

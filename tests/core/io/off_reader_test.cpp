@@ -62,9 +62,10 @@ TEST(OffReader, AcceptsALastLineWithoutNewline) {
   EXPECT_EQ(mesh.triangles.size(), 1u);
 }
 
-TEST(OffReader, FanTriangulatesPolygons) {
-  // A quad and a pentagon: n corners give n - 2 triangles, all sharing the
-  // first corner and keeping the polygon's winding.
+TEST(OffReader, TriangulatesPolygonsByCuttingEars) {
+  // A quad and a pentagon: n corners give n - 2 triangles keeping the
+  // polygon's winding; the quad as a fan from its first corner, the
+  // pentagon as two ears and the triangle they leave (polygon.h).
   const MeshData mesh = readOffText(
       "OFF\n7 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n3 1 0\n2 2 0\n"
       "4 0 1 2 3\n5 1 4 5 6 2\n");
@@ -72,8 +73,8 @@ TEST(OffReader, FanTriangulatesPolygons) {
   EXPECT_EQ(mesh.triangles[0], (TriangleIndices{0, 1, 2}));
   EXPECT_EQ(mesh.triangles[1], (TriangleIndices{0, 2, 3}));
   EXPECT_EQ(mesh.triangles[2], (TriangleIndices{1, 4, 5}));
-  EXPECT_EQ(mesh.triangles[3], (TriangleIndices{1, 5, 6}));
-  EXPECT_EQ(mesh.triangles[4], (TriangleIndices{1, 6, 2}));
+  EXPECT_EQ(mesh.triangles[3], (TriangleIndices{5, 6, 2}));
+  EXPECT_EQ(mesh.triangles[4], (TriangleIndices{1, 5, 2}));
 }
 
 TEST(OffReader, IgnoresPerFaceColourValuesAfterTheIndices) {

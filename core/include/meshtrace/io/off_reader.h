@@ -1,6 +1,6 @@
 #pragma once
 // Reader for OFF meshes as found in the wild: comments, blank lines, CRLF,
-// counts on the header line, polygons (fan-triangulated) and trailing
+// counts on the header line, polygons (triangulated by polygon.h) and trailing
 // per-face values such as colours.
 #include <filesystem>
 
