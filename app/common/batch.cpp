@@ -34,18 +34,33 @@ bool imageDestinationUsable(const std::filesystem::path& path) {
   return true;
 }
 
-bool reportDestinationUsable(const std::filesystem::path& dir) {
+ReportFolder::ReportFolder(const std::filesystem::path& dir) : dir_(dir) {
   std::error_code ec;
+  for (std::filesystem::path p = std::filesystem::absolute(dir, ec).lexically_normal();
+       !ec && !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+    topMade_ = p;
+    if (p == p.parent_path()) break;
+  }
   std::filesystem::create_directories(dir, ec);
   try {
     if (ec)
       throw std::runtime_error(dir.string() + ": cannot create the folder (" + ec.message() + ")");
     checkOutputDestination(dir / "report.md");
+    usable_ = true;
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return false;
   }
-  return true;
+}
+
+ReportFolder::~ReportFolder() {
+  if (kept_ || topMade_.empty()) return;
+  // Innermost first; remove() takes only an empty folder, so anything
+  // written there since (by another process, too) stops it.
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(dir_, ec).lexically_normal();
+  for (; !ec; p = p.parent_path()) {
+    if (!std::filesystem::remove(p, ec) || p == topMade_) break;
+  }
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {

@@ -80,9 +80,27 @@ int runOverFolder(const std::filesystem::path& dir, const std::filesystem::path&
 // that neither is spent on an output that cannot be written.
 bool imageDestinationUsable(const std::filesystem::path& path);
 
-// Whether `raytrace --report` could write into `dir` (created if missing);
-// prints the error if not, before the measurements.
-bool reportDestinationUsable(const std::filesystem::path& dir);
+// The folder `raytrace --report` or `--report-merge` writes into, made at
+// once so that an unusable destination is refused (the error printed)
+// before the measurements. A run that fails before its report is written
+// leaves no trace: unless kept, the folders this made are removed again
+// while they are empty.
+class ReportFolder {
+ public:
+  explicit ReportFolder(const std::filesystem::path& dir);
+  ~ReportFolder();
+  ReportFolder(const ReportFolder&) = delete;
+  ReportFolder& operator=(const ReportFolder&) = delete;
+
+  bool usable() const { return usable_; }
+  // The report is written: the folder stays.
+  void keep() { kept_ = true; }
+
+ private:
+  std::filesystem::path dir_;
+  std::filesystem::path topMade_;  // the outermost folder this made, or empty
+  bool usable_ = false, kept_ = false;
+};
 
 // Milliseconds since `start`, for timing lines.
 double millisecondsSince(std::chrono::steady_clock::time_point start);

@@ -183,9 +183,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "error: --report-merge DIR needs the shares' report folders\n");
       return 2;
     }
-    if (!app::reportDestinationUsable(mergeDir)) return 1;
+    app::ReportFolder folder(mergeDir);
+    if (!folder.usable()) return 1;
     try {
       mergeReports(mergeDir, {args.begin(), args.end()});
+      folder.keep();
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "error: --report-merge: %s\n", e.what());
       return 1;
@@ -208,7 +210,8 @@ int main(int argc, char** argv) {
     }
     const std::optional<Shard> shard = app::shardToRun(shardOption);
     if (!shard) return 2;
-    if (!app::reportDestinationUsable(reportDir)) return 1;
+    app::ReportFolder folder(reportDir);
+    if (!folder.usable()) return 1;
     // Sorted, as --all's scenes are: every share deals the same list.
     std::sort(args.begin(), args.end());
     const ReportShare share{*shard, {args.begin(), args.end()}};
@@ -241,6 +244,7 @@ int main(int argc, char** argv) {
       withinMemory("write", "the report into " + reportDir, 0, [&] {
         writeReport(reportDir, reports, stabilityMarkdown(measureStabilityTable(300)), share);
       });
+      folder.keep();
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return 1;

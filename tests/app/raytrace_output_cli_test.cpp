@@ -1,7 +1,8 @@
 // raytrace's outputs written whole or not at all, as root too: read-only
 // folders and full disks (mounted for the run), a file size limit, a
 // signal in the middle of the write, a symlink at the output's name, the
-// longest legal name, and --report's files replaced together.
+// longest legal name, and --report's files replaced together (and no folder
+// left behind by a report that failed).
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -183,6 +184,24 @@ TEST(RaytraceOutput, ReportRefusesAReadOnlyFolderBeforeMeasuring) {
   test::expectMentions(r->err, {"error", "report", "read-only"});
   EXPECT_EQ(r->out.find("measured"), std::string::npos) << test::describe(*r);
   EXPECT_TRUE(test::listFolder(dir / "report").empty());
+}
+
+// A run that fails before writing its report leaves no folder it made (a
+// scene that does not load; the folders a/b both new), and an empty
+// folder that was there stays.
+TEST(RaytraceOutput, AFailedReportLeavesNoFolderItMade) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "broken.sce", "bogus\n");
+  for (const auto& reportDir : {dir / "a" / "b", dir / "there"}) {
+    SCOPED_TRACE(reportDir.string());
+    if (reportDir.filename() == "there") std::filesystem::create_directory(reportDir);
+    const auto r = test::runTool(
+        raytraceTool(), {"--report", reportDir.string(), (dir / "broken.sce").string()}, dir);
+    EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+    test::expectMentions(r.err, {"broken.sce:1"});
+  }
+  EXPECT_EQ(test::listFolder(dir), (std::vector<std::string>{"broken.sce", "there"}));
+  EXPECT_TRUE(test::listFolder(dir / "there").empty());
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // raytrace --all and --report with --shard I/N: four shares run side by
 // side with GNU parallel write what one run writes (--report's once
 // merged); a Slurm array task's index picks the same share; a malformed
-// share, and a merge of shares that overlap or leave one out, are refused.
+// share, and a merge of shares that overlap or leave one out, are refused,
+// leaving no folder behind.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,6 +133,18 @@ TEST(RaytraceShard, FourReportSharesThroughGnuParallelMergeIntoOneRunsRows) {
                            : "share 3/4 (" + (dir / "scenes" / "s3.sce").string() + ")"});
   }
   EXPECT_EQ(rowsWithoutTimes(dir / "merged" / "report.csv"), rows);
+}
+
+// A refused merge leaves no folder behind where there was none.
+TEST(RaytraceShard, ARefusedMergeLeavesNoFolder) {
+  const auto dir = test::scratchDir();
+  std::filesystem::create_directory(dir / "share0");
+  const auto r = test::runTool(
+      test::raytraceTool(),
+      {"--report-merge", (dir / "merged").string(), (dir / "share0").string()}, dir);
+  EXPECT_TRUE(r.exited && r.exitCode == 1) << test::describe(r);
+  test::expectMentions(r.err, {"error: --report-merge", "share.txt"});
+  EXPECT_EQ(test::listFolder(dir), std::vector<std::string>{"share0"});
 }
 
 TEST(RaytraceShard, RefusesAMalformedShare) {
