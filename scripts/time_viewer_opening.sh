@@ -5,7 +5,9 @@
 # raytrace run's wall time, the viewer's first and exact image (from its
 # --frame-log, counted from the opening), their ratios, and the longest
 # frame while the scene opened and rendered, with the UI thread's own
-# processor time in it (the rest it waited for a core or for GL).
+# processor time in it (the rest it waited for a core or for GL), and
+# that frame's whole log line (the kernel's share, page faults, waits and
+# preemptions).
 # Usage: scripts/time_viewer_opening.sh SCENE.sce [ROUNDS] [-- VIEWER ARGS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,6 +38,7 @@ for ((r = 1; r <= rounds; ++r)); do
       sub("ms:", "", $2); n++
       if ($2 > longest) {
         longest = $2
+        line = $0
         for (i = 1; i <= NF; ++i) if ($i == "cpu") { cpu = $(i + 1); sub(",", "", cpu) }
       }
     }
@@ -49,5 +52,6 @@ for ((r = 1; r <= rounds; ++r)); do
     END {
       printf "%-5d %12.1f %12.1f %12.1f %8.3f %8.3f %12.1f %9.1f %7d\n", r, rt, first, exact,
              first / rt, exact / rt, longest, cpu, n
+      printf "      longest: %s\n", line
     }' "$work/frames.log"
 done

@@ -94,8 +94,8 @@ std::optional<ViewerOptions> parseOptions(int argc, char** argv, int& exitCode) 
                "Show timing figures as '-' (for stable snapshots)");
   cli.add_flag("--stats", o.stats, "Print load, first image, exact image and frame times");
   cli.add_flag("--frame-log", o.frameLog,
-               "Print each frame's duration, and when each render's images reach the texture, "
-               "to stderr");
+               "Print each frame's duration and the UI thread's use of the machine in it, and "
+               "when each render's images reach the texture, to stderr");
   cli.add_flag("--time-opening", o.timeOpening,
                "Headless: open every listed scene in turn, as a drop would, and print the time "
                "from opening to its first and its exact image in the texture");

@@ -2,6 +2,7 @@
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <sys/resource.h>
 #include <time.h>
 
 #include <chrono>
@@ -115,16 +116,28 @@ namespace {
 // When a frame took its input, was built, drawn and shown, and the UI
 // thread's own processor time for it (the rest of its duration it waited
 // for a core, or for GL).
-struct FrameMoments {
-  Clock::time_point input, built, drawn, end;
-  double cpuStart = 0.0, cpuEnd = 0.0;
+// The UI thread's own use of the machine so far: processor time (all, and
+// the kernel's share), page faults, and the times it gave up its core
+// (waiting) or had it taken (preempted).
+struct ThreadUse {
+  double cpuMs = 0.0, systemMs = 0.0;
+  long faults = 0, waits = 0, preemptions = 0;
+
+  static ThreadUse now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    rusage r{};
+    getrusage(RUSAGE_THREAD, &r);
+    return {t.tv_sec * 1e3 + t.tv_nsec * 1e-6,
+            r.ru_stime.tv_sec * 1e3 + r.ru_stime.tv_usec * 1e-3, r.ru_minflt + r.ru_majflt,
+            r.ru_nvcsw, r.ru_nivcsw};
+  }
 };
 
-double threadCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
+struct FrameMoments {
+  Clock::time_point input, built, drawn, end;
+  ThreadUse useStart, useEnd;
+};
 
 // What --frame-log has printed: the renders whose first and exact images
 // it reported, and when the frames began.
@@ -142,13 +155,16 @@ void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool render
   const ProgressiveStatus s = app.display().status();
   const bool firstShown = shown.firstImageMs >= 0 && s.job != log.firstShownJob;
   if (firstShown) log.firstShownJob = s.job;
-  std::fprintf(
-      stderr,
-      "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f, at %.1f%s%s%s\n",
-      msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
-      msBetween(m.drawn, m.end), m.cpuEnd - m.cpuStart, msBetween(log.start, m.end),
-      presented ? "" : ", not presented", rendering ? ", while rendering" : "",
-      firstShown ? ", shows a first image" : "");
+  const ThreadUse& a = m.useStart;
+  const ThreadUse& b = m.useEnd;
+  std::fprintf(stderr,
+               "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f (kernel %.1f; "
+               "%ld page faults, %ld waits, %ld preemptions), at %.1f%s%s%s\n",
+               msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
+               msBetween(m.drawn, m.end), b.cpuMs - a.cpuMs, b.systemMs - a.systemMs,
+               b.faults - a.faults, b.waits - a.waits, b.preemptions - a.preemptions,
+               msBetween(log.start, m.end), presented ? "" : ", not presented",
+               rendering ? ", while rendering" : "", firstShown ? ", shows a first image" : "");
   if (shown.exactImageMs < 0 || s.job == log.exactShownJob) return;
   log.exactShownJob = s.job;
   std::fprintf(stderr,
@@ -169,7 +185,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     host.waitForInput(app.waitBeforeNextFrameMs(lastInput));
     FrameMoments m;
     lastInput = m.input = Clock::now();
-    m.cpuStart = threadCpuMs();
+    m.useStart = ThreadUse::now();
     app.display().frameBegins();
     const auto [width, height] = host.beginFrame();
     ImGui_ImplOpenGL3_NewFrame();
@@ -185,7 +201,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     }
     app.display().frameEnds();
     m.end = Clock::now();
-    m.cpuEnd = threadCpuMs();
+    m.useEnd = ThreadUse::now();
     const bool rendering = app.frameDone(msBetween(m.input, m.end));
     if (app.state().options.frameLog) logFrame(app, m, presented, rendering, log);
   }
