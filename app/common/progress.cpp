@@ -1,8 +1,10 @@
 #include "common/progress.h"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cstdio>
+#include <mutex>
 
 namespace meshtrace::app {
 
@@ -28,21 +30,75 @@ std::string durationText(double seconds) {
   return std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
 }
 
-void ProgressLine::draw(std::string text) {
-  if (!shown()) return;
-  // Spaces over what a longer previous line left.
+namespace {
+// The terminal line is one for every ProgressLine, drawn from the main
+// thread and from loading workers.
+std::mutex& terminalLock() {
+  static std::mutex lock;
+  return lock;
+}
+ProgressLine*& innermostLine() {
+  static ProgressLine* line = nullptr;
+  return line;
+}
+std::size_t& widthOnTerminal() {  // of what was drawn last, to cover it
+  static std::size_t width = 0;
+  return width;
+}
+
+std::size_t terminalColumns() {
+  winsize size{};
+  return ::ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 ? size.ws_col : 0;
+}
+
+// With terminalLock held.
+void drawOnTerminal(std::string text) {
+  // One column short of the width: a character in the last column leaves
+  // some terminals' cursor past it, on the next line.
+  const std::size_t columns = terminalColumns();
+  if (columns > 1 && text.size() > columns - 1) text.resize(columns - 1);
   const std::size_t width = text.size();
-  if (text.size() < width_) text.append(width_ - text.size(), ' ');
-  width_ = width;
+  if (width < widthOnTerminal()) text.append(widthOnTerminal() - width, ' ');
+  widthOnTerminal() = width;
   std::fprintf(stderr, "%s\r", text.c_str());
   std::fflush(stderr);
 }
+}  // namespace
 
+std::string ProgressLine::nestedText() const {
+  return outer_ ? outer_->nestedText() + " | " + text_ : text_;
+}
+
+void ProgressLine::draw(std::string text) {
+  if (!shown()) return;
+  const std::lock_guard<std::mutex> guard(terminalLock());
+  if (!drawn_) {
+    outer_ = innermostLine();
+    innermostLine() = this;
+    drawn_ = true;
+  }
+  text_ = std::move(text);
+  drawOnTerminal(nestedText());
+}
+
+// Wipes the whole terminal line, the outer lines' text too: the tools'
+// next output starts at its beginning, and an outer line shows again at
+// its next update.
 void ProgressLine::clear() {
-  if (width_ == 0) return;
-  std::fprintf(stderr, "%*s\r", static_cast<int>(width_), "");
+  const std::lock_guard<std::mutex> guard(terminalLock());
+  if (!drawn_) return;
+  drawn_ = false;
+  // Out of the chain of lines, wherever it stands in it (an outer line
+  // may be cleared first).
+  for (ProgressLine** link = &innermostLine(); *link; link = &(*link)->outer_)
+    if (*link == this) {
+      *link = outer_;
+      break;
+    }
+  outer_ = nullptr;
+  std::fprintf(stderr, "%*s\r", static_cast<int>(widthOnTerminal()), "");
   std::fflush(stderr);
-  width_ = 0;
+  widthOnTerminal() = 0;
 }
 
 Progress::Progress(std::string what, std::size_t total)

@@ -1,7 +1,8 @@
 // Progress lines while a large mesh loads: on a terminal (a pseudo-terminal
 // made by script(1)) raytrace names the mesh and how much of it is read;
 // nothing of it with --quiet, when its output is not a terminal, or for a
-// small mesh; and an error in a large mesh starts on a line of its own.
+// small mesh; within --all's scene line; and an error in a large mesh
+// starts on a line of its own.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -70,6 +71,32 @@ TEST(RaytraceLoadProgress, DebugAabbShowsTheLineAndIsQuietWithQuiet) {
   ASSERT_TRUE(quiet.exited && quiet.exitCode == 0) << test::describe(quiet);
   EXPECT_NE(quiet.out.find("loaded "), std::string::npos) << quiet.out;
   EXPECT_EQ(quiet.out.find("loading"), std::string::npos) << quiet.out;
+}
+
+// With --all, the mesh's line is drawn after the scene's, which it would
+// otherwise hide while the mesh loads.
+TEST(RaytraceLoadProgress, NestsInTheSceneLineOfAll) {
+  const LargeMeshScene large;
+  const auto r = test::runOnTerminal(test::raytraceTool().string() + " --all " +
+                                         large.dir.string() + " " + (large.dir / "out").string(),
+                                     large.dir);
+  ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
+  EXPECT_NE(r.out.find("\rscene 1/1 (knot.sce) | loading knot.ply: "), std::string::npos) << r.out;
+}
+
+// A line wider than the terminal would wrap, and the next redraw would
+// start on the wrapped part: every drawn line is cut one column short of
+// the width.
+TEST(RaytraceLoadProgress, CutsTheLineToTheTerminalsWidth) {
+  const LargeMeshScene large;
+  const auto r = test::runOnTerminal("stty cols 30; " + test::raytraceTool().string() +
+                                         " --all " + large.dir.string() + " " +
+                                         (large.dir / "out").string(),
+                                     large.dir);
+  ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
+  const std::size_t load = r.out.find("\rscene 1/1 (knot.sce) | lo");
+  ASSERT_NE(load, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\r', load + 1), load + 1 + 29) << r.out;
 }
 
 TEST(RaytraceLoadProgress, IsQuietWhenNotATerminal) {
