@@ -64,12 +64,17 @@ class PlyCheck {
   PlyCheck(const std::filesystem::path& file, std::string_view bytes)
       : file_(file), bytes_(bytes), header_(readPlyHeader(file, bytes, bytes.size())) {}
 
-  void run() {
+  ElementCounts run() {
     const std::string_view body = bytes_.substr(header_.bodyStart);
     if (header_.format == "ascii")
       walkAscii(body);
     else
       walkBinary(body, header_.format == "binary_big_endian");
+    ElementCounts counts{header_.vertices, 0};
+    for (const PlyElement& e : header_.elements)
+      for (const PlyProperty& p : e.properties)
+        if (isPlyCornerList(e, p)) counts.faces += e.count;
+    return counts;
   }
 
  private:
@@ -169,7 +174,8 @@ class PlyCheck {
 
 // ---- STL ----
 
-void checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
+// Returns the facets.
+std::uint64_t checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
   Tokens tokens(bytes);
   std::string_view t;
   const auto expect = [&](std::string_view word, const std::string& where) {
@@ -193,7 +199,8 @@ void checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
   // The solid's name runs to the first facet or endsolid.
   while (tokens.next(t) && t != "facet" && t != "endsolid") {
   }
-  for (std::size_t facet = 0; t == "facet"; ++facet) {
+  std::size_t facet = 0;
+  for (; t == "facet"; ++facet) {
     const std::string where = "facet " + std::to_string(facet);
     expect("normal", where);
     numbers(3, where);
@@ -210,6 +217,7 @@ void checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
   }
   if (t != "endsolid")
     throw InputError::atLine(file, tokens.line(), "expected facet or endsolid, found " + quoted(t));
+  return facet;
 }
 
 std::uint32_t littleEndian32(const char* at) {
@@ -220,19 +228,19 @@ std::uint32_t littleEndian32(const char* at) {
 }
 }  // namespace
 
-void checkPly(const std::filesystem::path& file, std::string_view bytes) {
-  PlyCheck(file, bytes).run();
+ElementCounts checkPly(const std::filesystem::path& file, std::string_view bytes) {
+  return PlyCheck(file, bytes).run();
 }
 
-void checkStl(const std::filesystem::path& file, std::string_view bytes) {
+ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes) {
   if (bytes.size() >= 84) {
     const std::uint64_t triangles = littleEndian32(bytes.data() + 80);
-    if (bytes.size() == 84 + 50 * triangles) return;  // binary, whole
+    if (bytes.size() == 84 + 50 * triangles) return {0, triangles};  // binary, whole
   }
-  checkAsciiStl(file, bytes);
+  return {0, checkAsciiStl(file, bytes)};
 }
 
-void checkObj(const std::filesystem::path& file, std::string_view bytes) {
+ElementCounts checkObj(const std::filesystem::path& file, std::string_view bytes) {
   std::int64_t vertices = 0;
   std::size_t line = 0, faces = 0;
   for (std::size_t pos = 0; pos < bytes.size();) {
@@ -281,9 +289,10 @@ void checkObj(const std::filesystem::path& file, std::string_view bytes) {
       }
     }
   }
+  return {static_cast<std::uint64_t>(vertices), faces};
 }
 
-void checkOm(const std::filesystem::path& file, std::string_view bytes) {
+[[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes) {
   // magic "OM", mesh kind, version, then the vertex, face and edge counts.
   if (bytes.size() < 16 || bytes.substr(0, 2) != "OM")
     throw InputError::inFile(file, "not an OM file: no OM header");

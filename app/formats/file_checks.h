@@ -7,25 +7,33 @@
 // walks the file's structure (no values are kept, nothing is allocated per
 // element) and throws InputError naming the file, the line or the element,
 // and what is wrong.
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 
 namespace meshtrace::formats {
 
+// The elements a checked file holds, for the progress of its read: its
+// vertices (0 where the format does not say, as STL, whose corners are
+// merged into vertices as they are read) and its faces.
+struct ElementCounts {
+  std::uint64_t vertices = 0, faces = 0;
+};
+
 // The whole header: the format, elements, properties and end_header in
 // the first 64 KiB; a vertex element with x, y and z and a face element
 // with a list of vertex indices; counts a file of this size can hold; then
 // every element of the body, each face listing 3 to (vertex count) corners.
-void checkPly(const std::filesystem::path& file, std::string_view bytes);
+ElementCounts checkPly(const std::filesystem::path& file, std::string_view bytes);
 // Binary when its size is 84 + 50 x the triangle count at byte 80 (as
 // OpenMesh decides), else ASCII: solid, then facets of exactly three
 // vertices of three numbers each, then endsolid.
-void checkStl(const std::filesystem::path& file, std::string_view bytes);
+ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes);
 // Vertex lines of three numbers or more, faces of three corners or more,
 // each naming a vertex defined above it (counted from 1, or back from the
 // last with a negative index); a material library must be a regular file.
-void checkObj(const std::filesystem::path& file, std::string_view bytes);
-// The header's counts against the file's size.
-void checkOm(const std::filesystem::path& file, std::string_view bytes);
+ElementCounts checkObj(const std::filesystem::path& file, std::string_view bytes);
+// The header's counts against the file's size; then refused (README).
+[[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes);
 
 }  // namespace meshtrace::formats

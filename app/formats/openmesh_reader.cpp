@@ -12,11 +12,13 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "formats/file_checks.h"
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/load_observer.h"
 #include "meshtrace/io/mesh_reader.h"
 #include "meshtrace/io/ply_reader.h"
 
@@ -36,14 +38,61 @@ constexpr std::uint64_t kBytesPerVertex = sizeof(OpenMesh::Vec3d) + 4 + sizeof(V
 constexpr std::uint64_t kBytesPerFace = 4;
 constexpr std::size_t kFirstBlock = 4096;
 
+// A read's progress for the load observer, in bytes of the file: OpenMesh's
+// readers do not say how far into the file they are, so the share read is
+// taken as the share of the elements (vertices, then faces, as the check
+// before the read counted them) the importer has been given.
+class ReadProgress {
+ public:
+  ReadProgress(LoadObserver* observer, std::filesystem::path file, std::uint64_t fileBytes,
+               formats::ElementCounts counts)
+      : observer_(observer), file_(std::move(file)), fileBytes_(fileBytes), counts_(counts) {}
+
+  void vertex() {
+    if (counts_.vertices > 0) step();  // else not counted (STL)
+  }
+  void face() { step(); }
+  // The rest of the file, once the read is over.
+  void finish() { report(fileBytes_); }
+
+ private:
+  // A report every 64k elements: a few MB of text, as the other readers
+  // report a piece of the file at a time.
+  static constexpr std::uint64_t kElementsAPiece = 1 << 16;
+
+  void step() {
+    if (++done_ % kElementsAPiece != 0) return;
+    const std::uint64_t total = counts_.vertices + counts_.faces;
+    const auto share = static_cast<double>(std::min(done_, total)) / static_cast<double>(total);
+    report(static_cast<std::uint64_t>(share * static_cast<double>(fileBytes_)));
+  }
+  void report(std::uint64_t bytes) {
+    if (!observer_ || bytes <= reported_) return;
+    observer_->bytesRead(file_, bytes - reported_, fileBytes_);
+    reported_ = bytes;
+  }
+
+  LoadObserver* observer_;
+  std::filesystem::path file_;
+  std::uint64_t fileBytes_;
+  formats::ElementCounts counts_;
+  std::uint64_t done_ = 0, reported_ = 0;
+};
+
 // Takes each face's corners as OFF's reader does (appendPolygonTriangles) instead
 // of building OpenMesh's halfedge topology, which drops or splits the
 // faces a non-manifold mesh has. Ignores the readers' reserve calls: they
 // pass counts from the file's header, unchecked.
 class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
  public:
-  CornerImporter(PointMesh& mesh, MeshData& out, MemoryBudget& budget, std::string name)
-      : ImporterT(mesh), mesh_(mesh), out_(out), budget_(budget), name_(std::move(name)) {}
+  CornerImporter(PointMesh& mesh, MeshData& out, MemoryBudget& budget, std::string name,
+                 ReadProgress& progress)
+      : ImporterT(mesh),
+        mesh_(mesh),
+        out_(out),
+        budget_(budget),
+        name_(std::move(name)),
+        progress_(progress) {}
 
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
     return add_vertex(OpenMesh::Vec3d(p));
@@ -73,6 +122,7 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
       }
     }
     planTriangles(corners.size() - 2);
+    progress_.face();
     indices_.clear();
     for (const OpenMesh::VertexHandle& c : corners)
       indices_.push_back(static_cast<std::uint32_t>(c.idx()));
@@ -92,6 +142,7 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
 
  private:
   void planVertex() {
+    progress_.vertex();
     if (mesh_.n_vertices() < plannedVertices_) return;
     const std::size_t more = std::max(kFirstBlock, plannedVertices_);
     budget_.reserve(more * kBytesPerVertex, "load",
@@ -123,6 +174,7 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
   std::size_t faces_ = 0;
   std::vector<std::uint32_t> indices_;  // of the face being added
   std::string problem_;
+  ReadProgress& progress_;
 };
 
 // OM files store the halfedge structure: their faces come with halfedges
@@ -191,15 +243,19 @@ class MappedFile {
   std::size_t size_ = 0;
 };
 
-// What OpenMesh's reader of `file`'s extension must not be handed.
-void checkBeforeReading(const std::filesystem::path& file) {
+// What OpenMesh's reader of `file`'s extension must not be handed; returns
+// the file's size and what it holds.
+std::pair<std::uint64_t, formats::ElementCounts> checkBeforeReading(
+    const std::filesystem::path& file) {
   const MappedFile mapped(file);
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".ply") checkPly(file, mapped.bytes());
-  if (extension == ".stl") checkStl(file, mapped.bytes());
-  if (extension == ".obj") checkObj(file, mapped.bytes());
+  formats::ElementCounts counts;
+  if (extension == ".ply") counts = checkPly(file, mapped.bytes());
+  if (extension == ".stl") counts = checkStl(file, mapped.bytes());
+  if (extension == ".obj") counts = checkObj(file, mapped.bytes());
   if (extension == ".om") checkOm(file, mapped.bytes());
+  return {mapped.bytes().size(), counts};
 }
 
 // OpenMesh's readers keep the state of a read in their (global) instances
@@ -235,7 +291,8 @@ void registerOpenMeshFormats() {
 }
 
 MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budget) {
-  checkBeforeReading(file);
+  const auto [fileBytes, counts] = checkBeforeReading(file);
+  ReadProgress progress(budget.loadObserver(), file, fileBytes, counts);
   MeshData out;
   PointMesh mesh;
   std::string problem;
@@ -243,10 +300,11 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
   {
     const std::lock_guard<std::mutex> hold(readLock());
     silenceOpenMesh();
-    CornerImporter importer(mesh, out, budget, file.filename().string());
+    CornerImporter importer(mesh, out, budget, file.filename().string(), progress);
     OpenMesh::IO::Options options;
     read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
     problem = importer.problem();
+    if (read && problem.empty()) progress.finish();
   }
   if (read && problem.empty() && out.triangles.empty() && mesh.n_faces() > 0) {
     // A face's loop has at most n_halfedges corners: the triangles are fewer.

@@ -1,0 +1,43 @@
+// The meshes OpenMesh reads (OBJ here) show the same load line as those
+// the core reads: on a terminal (a pseudo-terminal made by script(1)),
+// how much of the file is read, rising as it is, then "computing normals"
+// once the whole file counts as read.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "meshtrace/geometry/mesh_generators.h"
+#include "mesh_files.h"
+#include "support/cli.h"
+#include "support/paths.h"
+
+namespace meshtrace {
+namespace {
+
+TEST(OpenMeshReadProgress, AnObjFileShowsHowMuchIsRead) {
+  const auto dir = test::scratchDir();
+  // 250k triangles, about 10 MB of OBJ: above the 8 MB from which a load
+  // shows a line.
+  const auto obj = dir / "knot.obj";
+  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 1250, 100), test::MeshFormat::Obj,
+                      obj);
+  ASSERT_GT(std::filesystem::file_size(obj), 8u << 20);
+  const auto r = test::runOnTerminal(
+      test::raytraceTool().string() + " " + obj.string() + " " + (dir / "out.png").string(), dir);
+  ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
+  std::set<std::string> shares;
+  const std::string line = "loading knot.obj: ";
+  for (std::size_t at = r.out.find(line); at != std::string::npos; at = r.out.find(line, at + 1)) {
+    const std::size_t start = at + line.size();
+    const std::size_t percent = r.out.find('%', start);
+    if (percent != std::string::npos && percent - start <= 3)
+      shares.insert(r.out.substr(start, percent - start));
+  }
+  EXPECT_GE(shares.size(), 2u) << r.out;
+  EXPECT_NE(r.out.find(line + "computing normals"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\rloaded "), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace meshtrace
