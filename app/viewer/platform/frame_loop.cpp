@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include "viewer/gl/gl_api.h"
@@ -116,12 +117,28 @@ namespace {
 // When a frame took its input, was built, drawn and shown, and the UI
 // thread's own processor time for it (the rest of its duration it waited
 // for a core, or for GL).
+// The processor time the machine's host has taken from this virtual
+// machine so far (steal, summed over its processors; 0 on bare metal), in
+// ms, from /proc/stat's ticks (USER_HZ, 100 a second on Linux). A frame
+// whose thread was slow while steal grew was slowed by the host, not by
+// our code.
+double stealMs() {
+  std::FILE* f = std::fopen("/proc/stat", "r");
+  if (!f) return 0.0;
+  unsigned long long user, nice, system, idle, iowait, irq, softirq, steal = 0;
+  const int read = std::fscanf(f, "cpu %llu %llu %llu %llu %llu %llu %llu %llu", &user, &nice,
+                               &system, &idle, &iowait, &irq, &softirq, &steal);
+  std::fclose(f);
+  return read == 8 ? static_cast<double>(steal) * 10.0 : 0.0;
+}
+
 // The UI thread's own use of the machine so far: processor time (all, and
 // the kernel's share), page faults, and the times it gave up its core
-// (waiting) or had it taken (preempted).
+// (waiting) or had it taken (preempted); and the host's steal.
 struct ThreadUse {
   double cpuMs = 0.0, systemMs = 0.0;
   long faults = 0, waits = 0, preemptions = 0;
+  double stealMs = 0.0;
 
   static ThreadUse now() {
     timespec t{};
@@ -129,8 +146,11 @@ struct ThreadUse {
     rusage r{};
     getrusage(RUSAGE_THREAD, &r);
     return {t.tv_sec * 1e3 + t.tv_nsec * 1e-6,
-            r.ru_stime.tv_sec * 1e3 + r.ru_stime.tv_usec * 1e-3, r.ru_minflt + r.ru_majflt,
-            r.ru_nvcsw, r.ru_nivcsw};
+            r.ru_stime.tv_sec * 1e3 + r.ru_stime.tv_usec * 1e-3,
+            r.ru_minflt + r.ru_majflt,
+            r.ru_nvcsw,
+            r.ru_nivcsw,
+            meshtrace::viewer::stealMs()};
   }
 };
 
@@ -159,11 +179,11 @@ void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool render
   const ThreadUse& b = m.useEnd;
   std::fprintf(stderr,
                "frame %.1f ms: ui %.1f, draw %.1f, present %.1f, ui thread cpu %.1f (kernel %.1f; "
-               "%ld page faults, %ld waits, %ld preemptions), at %.1f%s%s%s\n",
+               "%ld page faults, %ld waits, %ld preemptions), host steal %.0f, at %.1f%s%s%s\n",
                msBetween(m.input, m.end), msBetween(m.input, m.built), msBetween(m.built, m.drawn),
                msBetween(m.drawn, m.end), b.cpuMs - a.cpuMs, b.systemMs - a.systemMs,
                b.faults - a.faults, b.waits - a.waits, b.preemptions - a.preemptions,
-               msBetween(log.start, m.end), presented ? "" : ", not presented",
+               b.stealMs - a.stealMs, msBetween(log.start, m.end), presented ? "" : ", not presented",
                rendering ? ", while rendering" : "", firstShown ? ", shows a first image" : "");
   if (shown.exactImageMs < 0 || s.job == log.exactShownJob) return;
   log.exactShownJob = s.job;
