@@ -7,15 +7,16 @@
 #   scripts/fuzz.sh [--long] [HARNESS...]
 #     harnesses: scene_parser off_reader command_line image_writer ply_reader
 #     obj_reader stl_reader (default: all) and om_reader (by name only)
-#     FUZZ_SECONDS per harness, default 30; --long: an hour each, two at a
-#     time, each harness's summary in build-fuzz/HARNESS.log
+#     FUZZ_SECONDS per harness, default 30; --long: an hour each. Two
+#     harnesses run at a time where there are two cores or more, each
+#     harness's summary in build-fuzz/HARNESS.log
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-30}"
-parallel=1
+# Each libFuzzer process runs on one core.
+parallel=$(( $(nproc) >= 2 ? 2 : 1 ))
 if [ "${1:-}" = --long ]; then
   seconds=3600
-  parallel=2
   shift
 fi
 harnesses=("$@")
