@@ -36,11 +36,16 @@ bool imageDestinationUsable(const std::filesystem::path& path) {
 
 ReportFolder::ReportFolder(const std::filesystem::path& dir) : dir_(dir) {
   std::error_code ec;
+  // The outermost of the folders missing on the way to `dir` (none when a
+  // folder on the way cannot be looked at).
   for (std::filesystem::path p = std::filesystem::absolute(dir, ec).lexically_normal();
-       !ec && !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+       !ec && !p.empty(); p = p.parent_path()) {
+    const bool there = std::filesystem::exists(p, ec);
+    if (ec || there) break;
     topMade_ = p;
     if (p == p.parent_path()) break;
   }
+  ec.clear();
   std::filesystem::create_directories(dir, ec);
   try {
     if (ec)

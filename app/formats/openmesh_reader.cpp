@@ -63,6 +63,7 @@ class ReadProgress {
   void step() {
     if (++done_ % kElementsAPiece != 0) return;
     const std::uint64_t total = counts_.vertices + counts_.faces;
+    if (total == 0) return;  // more elements than the check counted: none
     const auto share = static_cast<double>(std::min(done_, total)) / static_cast<double>(total);
     report(static_cast<std::uint64_t>(share * static_cast<double>(fileBytes_)));
   }

@@ -114,15 +114,12 @@ void drawFrame(ViewerApp& app, int width, int height) {
 }
 
 namespace {
-// When a frame took its input, was built, drawn and shown, and the UI
-// thread's own processor time for it (the rest of its duration it waited
-// for a core, or for GL).
 // The processor time the machine's host has taken from this virtual
 // machine so far (steal, summed over its processors; 0 on bare metal), in
 // ms, from /proc/stat's ticks (USER_HZ, 100 a second on Linux). A frame
 // whose thread was slow while steal grew was slowed by the host, not by
 // our code.
-double stealMs() {
+double hostStealMs() {
   std::FILE* f = std::fopen("/proc/stat", "r");
   if (!f) return 0.0;
   unsigned long long user, nice, system, idle, iowait, irq, softirq, steal = 0;
@@ -150,10 +147,12 @@ struct ThreadUse {
             r.ru_minflt + r.ru_majflt,
             r.ru_nvcsw,
             r.ru_nivcsw,
-            meshtrace::viewer::stealMs()};
+            hostStealMs()};
   }
 };
 
+// When a frame took its input, was built, drawn and shown, and with
+// --frame-log the UI thread's use of the machine before and after it.
 struct FrameMoments {
   Clock::time_point input, built, drawn, end;
   ThreadUse useStart, useEnd;
@@ -205,7 +204,8 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     host.waitForInput(app.waitBeforeNextFrameMs(lastInput));
     FrameMoments m;
     lastInput = m.input = Clock::now();
-    m.useStart = ThreadUse::now();
+    const bool frameLog = app.state().options.frameLog;
+    if (frameLog) m.useStart = ThreadUse::now();
     app.display().frameBegins();
     const auto [width, height] = host.beginFrame();
     ImGui_ImplOpenGL3_NewFrame();
@@ -221,9 +221,9 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
     }
     app.display().frameEnds();
     m.end = Clock::now();
-    m.useEnd = ThreadUse::now();
+    if (frameLog) m.useEnd = ThreadUse::now();
     const bool rendering = app.frameDone(msBetween(m.input, m.end));
-    if (app.state().options.frameLog) logFrame(app, m, presented, rendering, log);
+    if (frameLog) logFrame(app, m, presented, rendering, log);
   }
 }
 
