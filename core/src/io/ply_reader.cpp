@@ -62,10 +62,11 @@ std::int64_t loadInteger(const char* at, int size, bool isSigned, bool swap) {
   }
 }
 
-// Where a vertex record keeps x, y and z.
+// Where a vertex record keeps x, y and z, and of which type.
 struct Coordinate {
   std::size_t offset = 0;
   int size = 0;
+  bool isFloat = true, isSigned = false;
 };
 
 class BinaryPlyReader {
@@ -99,11 +100,8 @@ class BinaryPlyReader {
     for (const PlyElement& e : header.elements) {
       if (e.name == "vertex") {
         ++vertexElements;
-        for (const PlyProperty& p : e.properties) {
+        for (const PlyProperty& p : e.properties)
           if (p.countSize != 0) return false;
-          const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
-          if (coordinate && !p.isFloat) return false;
-        }
       }
       if (e.name == "face") {
         if (vertexElements == 0) return false;
@@ -131,7 +129,8 @@ class BinaryPlyReader {
     std::size_t record = 0;
     for (const PlyProperty& p : e.properties) {
       for (int k = 0; k < 3; ++k)
-        if (p.name.size() == 1 && p.name[0] == 'x' + k) xyz[k] = {record, p.size};
+        if (p.name.size() == 1 && p.name[0] == 'x' + k)
+          xyz[k] = {record, p.size, p.isFloat, p.isSigned};
       record += static_cast<std::size_t>(p.size);
     }
     for (std::uint64_t i = 0; i < e.count; ++i) {
@@ -139,7 +138,10 @@ class BinaryPlyReader {
       if (!at) endsAt(e, i);
       Vec3& v = mesh_.vertices[i];
       for (int k = 0; k < 3; ++k) {
-        v[k] = loadReal(at + xyz[k].offset, xyz[k].size, swap_);
+        const Coordinate& c = xyz[k];
+        // Integer coordinates (any PLY integer type) are exact in double.
+        v[k] = c.isFloat ? loadReal(at + c.offset, c.size, swap_)
+                         : static_cast<double>(loadInteger(at + c.offset, c.size, c.isSigned, swap_));
         if (!std::isfinite(v[k]))
           fail("vertex " + std::to_string(i) +
                element_problems::nonFiniteCoordinate(shortestText(v[k])));

@@ -84,8 +84,47 @@ TEST(BinaryPly, LeavesAsciiAndListValuedVerticesToOtherReaders) {
       "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
       "property list uchar float weights\n";
   EXPECT_FALSE(readPlyBytes(test::plyHeader(layout, declarations) + std::string(13, '\0')));
-  declarations = "element vertex 1\nproperty int x\nproperty int y\nproperty int z\n";
-  EXPECT_FALSE(readPlyBytes(test::plyHeader(layout, declarations) + std::string(12, '\0')));
+}
+
+// Integer coordinates, which OpenMesh's reader cannot convert (it printed
+// "unsupported conversion type to float" and read no faces), are read here
+// exactly, for every PLY integer type at its least and greatest value, in
+// either byte order.
+TEST(BinaryPly, ReadsIntegerCoordinatesOfEveryType) {
+  struct Type {
+    const char* name;
+    double least, greatest;
+  };
+  const Type types[] = {{"char", -128, 127},           {"uchar", 0, 255},
+                        {"short", -32768, 32767},      {"ushort", 0, 65535},
+                        {"int", -2147483648.0, 2147483647}, {"uint", 0, 4294967295.0},
+                        {"int8", -128, 127},           {"uint32", 0, 4294967295.0}};
+  for (bool bigEndian : {false, true})
+    for (const Type& t : types) {
+      SCOPED_TRACE(std::string(t.name) + (bigEndian ? ", big-endian" : ", little-endian"));
+      // x, y and z all of the type: (least, greatest, 0), (greatest, 0,
+      // least), (0, least, greatest).
+      const double values[3][3] = {{t.least, t.greatest, 0},
+                                   {t.greatest, 0, t.least},
+                                   {0, t.least, t.greatest}};
+      test::PlyValues body(bigEndian);
+      for (const auto& v : values)
+        for (double c : v) body.put(t.name, c);
+      body.put("uchar", 3);
+      for (double i : {0, 1, 2}) body.put("int", i);
+      const std::string type = t.name;
+      const std::optional<MeshData> mesh = readPlyBytes(
+          test::plyHeader({bigEndian, "float", "uchar", "int", false},
+                          "element vertex 3\nproperty " + type + " x\nproperty " + type +
+                              " y\nproperty " + type + " z\nelement face 1\n" +
+                              "property list uchar int vertex_indices\n") +
+          body.bytes());
+      ASSERT_TRUE(mesh.has_value());
+      ASSERT_EQ(mesh->vertices.size(), 3u);
+      for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(mesh->vertices[i], Vec3(values[i][0], values[i][1], values[i][2])) << i;
+      EXPECT_EQ(mesh->triangles, (std::vector<TriangleIndices>{{0, 1, 2}}));
+    }
 }
 
 // A mesh of three vertices and two faces, its bytes built value by value.
