@@ -101,6 +101,14 @@ class SceneParser {
                                "using another axis as up");
     }
     scene.meshes = loadMeshes(meshLines);
+    // A file of vertices and no faces (a point cloud, or a PLY whose face
+    // element is named otherwise) is a mesh, but draws nothing: say so, or
+    // the user sees an empty scene and no reason.
+    for (std::size_t i = 0; i < meshLines.size(); ++i)
+      if (scene.meshes[i].triangles().empty())
+        scene.warnings.push_back(file_.string() + ":" + std::to_string(meshLines[i].line) +
+                                 ": mesh " + meshLines[i].file.filename().string() +
+                                 " has no faces: it draws nothing");
     checkLights(scene);
     return scene;
   }

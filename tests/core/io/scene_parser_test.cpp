@@ -182,6 +182,19 @@ TEST(SceneParser, WarnsButAcceptsAnUpVectorParallelToTheView) {
   EXPECT_TRUE(scene.camera.upWasReplaced());
 }
 
+TEST(SceneParser, WarnsButAcceptsAMeshWithoutFaces) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  test::writeFile(dir / "tri.off", test::kTriangleOff);
+  const auto sceneFile =
+      test::writeFile(dir / "s.sce", kCameraLine + "mesh tri.off FLAT " + kMaterial +
+                                         "\nmesh points.off FLAT " + kMaterial + "\n");
+  const Scene scene = loadScene(sceneFile);
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  expectMentions(scene.warnings[0], {"s.sce:3", "points.off", "no faces"});
+}
+
 // --- bad scene files -------------------------------------------------------
 
 TEST(SceneParser, RejectsAMissingSceneFileNamingIt) {
