@@ -100,8 +100,10 @@ class BinaryPlyReader {
     for (const PlyElement& e : header.elements) {
       if (e.name == "vertex") {
         ++vertexElements;
-        for (const PlyProperty& p : e.properties)
-          if (p.countSize != 0) return false;
+        for (const PlyProperty& p : e.properties) {
+          const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
+          if (coordinate && p.countSize != 0) return false;
+        }
       }
       if (e.name == "face") {
         if (vertexElements == 0) return false;
@@ -127,26 +129,44 @@ class BinaryPlyReader {
     mesh_arrays::sizeVertices(mesh_, budget_, static_cast<std::size_t>(e.count), file_);
     Coordinate xyz[3];
     std::size_t record = 0;
+    bool lists = false;  // then records differ in size
     for (const PlyProperty& p : e.properties) {
       for (int k = 0; k < 3; ++k)
         if (p.name.size() == 1 && p.name[0] == 'x' + k)
           xyz[k] = {record, p.size, p.isFloat, p.isSigned};
       record += static_cast<std::size_t>(p.size);
+      lists |= p.countSize != 0;
     }
     for (std::uint64_t i = 0; i < e.count; ++i) {
-      const char* at = in_.take(record);
-      if (!at) endsAt(e, i);
       Vec3& v = mesh_.vertices[i];
-      for (int k = 0; k < 3; ++k) {
-        const Coordinate& c = xyz[k];
-        // Integer coordinates (any PLY integer type) are exact in double.
-        v[k] = c.isFloat ? loadReal(at + c.offset, c.size, swap_)
-                         : static_cast<double>(loadInteger(at + c.offset, c.size, c.isSigned, swap_));
+      if (lists) {
+        // Property by property: the coordinates read, the rest stepped over.
+        for (const PlyProperty& p : e.properties) {
+          const int k = p.name.size() == 1 ? p.name[0] - 'x' : -1;
+          if (k < 0 || k > 2) {
+            skipProperty(e, p, i);
+            continue;
+          }
+          const char* at = in_.take(static_cast<std::size_t>(p.size));
+          if (!at) endsAt(e, i);
+          v[k] = coordinateAt(at, {0, p.size, p.isFloat, p.isSigned});
+        }
+      } else {
+        const char* at = in_.take(record);
+        if (!at) endsAt(e, i);
+        for (int k = 0; k < 3; ++k) v[k] = coordinateAt(at + xyz[k].offset, xyz[k]);
+      }
+      for (int k = 0; k < 3; ++k)
         if (!std::isfinite(v[k]))
           fail("vertex " + std::to_string(i) +
                element_problems::nonFiniteCoordinate(shortestText(v[k])));
-      }
     }
+  }
+
+  // Integer coordinates (any PLY integer type) are exact in double.
+  double coordinateAt(const char* at, const Coordinate& c) const {
+    return c.isFloat ? loadReal(at, c.size, swap_)
+                     : static_cast<double>(loadInteger(at, c.size, c.isSigned, swap_));
   }
 
   void readFaces(const PlyElement& e) {

@@ -1,6 +1,7 @@
 // The binary PLY reader: the mesh OFF's reader reads from the same
-// polygons, in either byte order and for every type a file may use; the
-// files it leaves to other readers; and bad files refused with an
+// polygons, in either byte order and for every type a file may use, with
+// integer coordinates and with lists beside them; the files it leaves to
+// other readers; and bad files refused with an
 // InputError naming the file and the element.
 #include "meshtrace/io/ply_reader.h"
 
@@ -75,15 +76,43 @@ TEST(BinaryPly, ReadsAFileLargerThanItsBufferAsOffDoes) {
   }
 }
 
-TEST(BinaryPly, LeavesAsciiAndListValuedVerticesToOtherReaders) {
+TEST(BinaryPly, LeavesAsciiToOtherReaders) {
   EXPECT_FALSE(
       readPlyBytes("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                    "property float y\nproperty float z\nend_header\n0 0 0\n"));
-  PlyLayout layout;
-  std::string declarations =
-      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
-      "property list uchar float weights\n";
-  EXPECT_FALSE(readPlyBytes(test::plyHeader(layout, declarations) + std::string(13, '\0')));
+}
+
+// Vertices with lists beside their coordinates (of sizes that differ from
+// vertex to vertex) are read here too: OpenMesh's reader, which they went
+// to, could not convert the integer coordinates such files may also have.
+TEST(BinaryPly, ReadsVerticesWithListsBesideTheCoordinates) {
+  for (bool bigEndian : {false, true}) {
+    SCOPED_TRACE(bigEndian ? "big-endian" : "little-endian");
+    test::PlyValues body(bigEndian);
+    const double xyz[3][3] = {{0, 0, 5}, {1, 0, 5}, {0, 1, 7}};
+    for (int i = 0; i < 3; ++i) {
+      body.put("uchar", i);  // the list before x: i weights
+      for (int k = 0; k < i; ++k) body.put("float", 0.5);
+      body.put("float", xyz[i][0]);
+      body.put("uchar", xyz[i][1]);
+      body.put("short", 2 - i);  // the list after y: 2 - i shorts
+      for (int k = 0; k < 2 - i; ++k) body.put("short", -1);
+      body.put("double", xyz[i][2]);
+    }
+    body.put("uchar", 3);
+    for (double c : {0, 1, 2}) body.put("int", c);
+    const std::optional<MeshData> mesh = readPlyBytes(
+        test::plyHeader({bigEndian, "float", "uchar", "int", false},
+                        "element vertex 3\nproperty list uchar float weights\nproperty float x\n"
+                        "property uchar y\nproperty list short short marks\nproperty double z\n"
+                        "element face 1\nproperty list uchar int vertex_indices\n") +
+        body.bytes());
+    ASSERT_TRUE(mesh.has_value());
+    ASSERT_EQ(mesh->vertices.size(), 3u);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(mesh->vertices[i], Vec3(xyz[i][0], xyz[i][1], xyz[i][2])) << i;
+    EXPECT_EQ(mesh->triangles, (std::vector<TriangleIndices>{{0, 1, 2}}));
+  }
 }
 
 // Integer coordinates, which OpenMesh's reader cannot convert (it printed

@@ -11,11 +11,11 @@
 namespace meshtrace {
 
 // Reads a binary PLY file whose vertex element has x, y and z of any PLY
-// number type (its other properties skipped) and whose face element lists
-// its corners with integer indices; other elements and properties are
-// skipped by their size. Returns std::nullopt, having read only the
-// header, for a PLY file it leaves to other readers: ASCII, a vertex
-// element with lists, faces before the vertices. Throws InputError
+// number type (its other properties, lists too, skipped) and whose face
+// element lists its corners with integer indices; other elements and
+// properties are skipped by their size. Returns std::nullopt, having read
+// only the header, for a PLY file it leaves to other readers: ASCII,
+// faces before the vertices, more than one vertex or face element. Throws InputError
 // naming the file and the element ("face 17") on bad input: a header
 // readPlyHeader refuses, a truncated body, corner counts below 3 or above
 // the vertex count, indices out of range, non-finite coordinates. The
