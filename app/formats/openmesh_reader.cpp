@@ -9,8 +9,10 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <algorithm>
 #include <cctype>
+#include <iostream>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -266,6 +268,30 @@ std::mutex& readLock() {
   return lock;
 }
 
+// OpenMesh's PLY reader reports a value type it cannot convert (an integer
+// coordinate, say) straight to std::cerr, past its own streams, sets the
+// value to 0 and reads on from the wrong place, so the rest of the file is
+// misread. What it writes there during a read is caught, and the read
+// refused with it. (Our own code writes to stderr through stdio, never
+// std::cerr, and the read holds readLock.)
+class CerrCatcher {
+ public:
+  CerrCatcher() : previous_(std::cerr.rdbuf(caught_.rdbuf())) {}
+  ~CerrCatcher() { std::cerr.rdbuf(previous_); }
+  CerrCatcher(const CerrCatcher&) = delete;
+  CerrCatcher& operator=(const CerrCatcher&) = delete;
+
+  // The first line written, or "".
+  std::string firstLine() const {
+    const std::string text = caught_.str();
+    return text.substr(0, text.find('\n'));
+  }
+
+ private:
+  std::ostringstream caught_;
+  std::streambuf* previous_;
+};
+
 // OpenMesh's readers print to its global streams; the checks before them
 // say what is wrong instead. (Capturing the streams is no option: their
 // disconnect() leaks the target it removes.)
@@ -303,8 +329,13 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
     silenceOpenMesh();
     CornerImporter importer(mesh, out, budget, file.filename().string(), progress);
     OpenMesh::IO::Options options;
+    const CerrCatcher complaints;
     read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
     problem = importer.problem();
+    // The cause comes first: what the importer then found wrong follows
+    // from the misread.
+    if (const std::string said = complaints.firstLine(); !said.empty())
+      problem = "OpenMesh's reader cannot read its values (it says \"" + said + "\")";
     if (read && problem.empty()) progress.finish();
   }
   if (read && problem.empty() && out.triangles.empty() && mesh.n_faces() > 0) {
