@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 
 namespace meshtrace::test {
 
@@ -17,6 +19,11 @@ PolygonMesh polygonMesh(int copies) {
     }
     mesh.vertices.emplace_back(c * 8.0 + 1.5, 2.0, 0.5);
     mesh.vertices.emplace_back(c * 8.0 + 3.5, 2.5, -0.375);
+    // An L, in a plane of its own: not convex, so its first ears would
+    // reach across the notch and every reader must cut it again alike.
+    for (const auto& [x, y] :
+         std::initializer_list<std::pair<int, int>>{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
+      mesh.vertices.emplace_back(c * 8.0 + x, 3.0 + 0.5 * y, 1.0 + 0.25 * x);
     const auto f = [&](std::vector<std::uint32_t> corners) {
       for (std::uint32_t& k : corners) k += base;
       mesh.faces.push_back(std::move(corners));
@@ -27,6 +34,7 @@ PolygonMesh polygonMesh(int copies) {
     f({1, 3, 12});          // a triangle
     f({3, 5, 7, 13, 12});   // a pentagon
     f({8, 10, 11, 9});      // a quad
+    f({14, 15, 16, 17, 18, 19});  // the L
   }
   return mesh;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // A small polygon mesh (triangles, quads, a pentagon and a hexagon sharing
-// vertices) written as OFF text and as binary PLY of several layouts, built
+// vertices, and an L) written as OFF text and as binary PLY of several layouts, built
 // value by value from the PLY spec, for tests of the mesh readers.
 #include <cstdint>
 #include <ostream>
@@ -31,7 +31,8 @@ std::string describe(const PlyLayout& layout);
 // How gtest prints a layout that a test fails with.
 inline void PrintTo(const PlyLayout& layout, std::ostream* out) { *out << describe(layout); }
 
-// Vertices on a 1/8 grid (exact as floats), polygons of 3 to 6 corners.
+// Vertices on a 1/8 grid (exact as floats), polygons of 3 to 6 corners, one
+// of them (an L) not convex.
 // `copies` side by side grow it to any size.
 PolygonMesh polygonMesh(int copies = 1);
 

@@ -79,6 +79,8 @@ class OffParser {
                                           " of " + std::to_string(vertex ? nv_ : nf_) +
                                           " announced in the header");
     }
+    mesh_.untiledPolygons =
+        tileNonConvexPolygons(mesh_.vertices, polygons_, mesh_.triangles).untiled;
     return std::move(mesh_);
   }
 
@@ -99,6 +101,7 @@ class OffParser {
     };
     std::vector<Line> nonEmpty;
     std::vector<TriangleIndices> triangles;
+    std::vector<PolygonFace> polygons;   // among `triangles`
     std::vector<std::uint32_t> corners;  // of the face being read
     std::exception_ptr error;
 
@@ -198,6 +201,7 @@ class OffParser {
           std::unique_ptr<Chunk> c(chunk);
           gather(*c, done);
           c->triangles.clear();
+          c->polygons.clear();
           c->error = nullptr;
           const std::lock_guard<std::mutex> lock(spareLock);
           spare.push_back(std::move(c));
@@ -242,6 +246,10 @@ class OffParser {
         return;
       }
     }
+    for (PolygonFace face : c.polygons) {
+      face.firstTriangle += static_cast<std::uint32_t>(mesh_.triangles.size());
+      polygons_.push_back(face);
+    }
     mesh_.triangles.insert(mesh_.triangles.end(), c.triangles.begin(), c.triangles.end());
     if (c.piece.nulAfter()) {
       error_ = std::make_exception_ptr(nulError(c.lineBefore + c.lines + 1));
@@ -259,7 +267,7 @@ class OffParser {
         if (e < nv_)
           mesh_.vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
         else
-          readFace(line, e - nv_, lineNumber, c.corners, c.triangles);
+          readFace(line, e - nv_, lineNumber, c);
       } catch (const InputError&) {
         c.error = std::current_exception();
         return;
@@ -284,8 +292,7 @@ class OffParser {
   }
 
   void readFace(std::string_view line, std::int64_t index, std::size_t lineNumber,
-                std::vector<std::uint32_t>& corners,
-                std::vector<TriangleIndices>& triangles) const {
+                Chunk& c) const {
     const auto fail = [&](const std::string& what) {
       throw InputError::atLine(file_, lineNumber, "face " + std::to_string(index) + what);
     };
@@ -296,6 +303,7 @@ class OffParser {
       fail(": bad corner count " + quoted(token));
     if (!element_problems::validCornerCount(count, nv_))
       fail(element_problems::badCornerCount(count, nv_));
+    std::vector<std::uint32_t>& corners = c.corners;
     corners.clear();
     for (std::int64_t k = 0; k < count; ++k) {
       std::int64_t v = 0;
@@ -306,7 +314,7 @@ class OffParser {
       if (!element_problems::validIndex(v, nv_)) fail(element_problems::indexOutOfRange(v, nv_));
       corners.push_back(static_cast<std::uint32_t>(v));
     }
-    appendPolygonTriangles(corners, triangles);
+    appendPolygonTriangles(corners, c.triangles, &c.polygons);
     // Any further values on the line (face colours) are ignored.
   }
 
@@ -315,6 +323,7 @@ class OffParser {
   MemoryBudget& budget_;
   std::int64_t nv_ = 0, nf_ = 0;
   MeshData mesh_;
+  std::vector<PolygonFace> polygons_;
   std::int64_t elements_ = 0;  // elements read before the first error
   std::exception_ptr error_;
 };

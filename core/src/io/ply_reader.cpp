@@ -89,6 +89,8 @@ class BinaryPlyReader {
       else
         skipElement(e);
     }
+    mesh_.untiledPolygons =
+        tileNonConvexPolygons(mesh_.vertices, polygons_, mesh_.triangles).untiled;
     return std::move(mesh_);
   }
 
@@ -198,7 +200,7 @@ class BinaryPlyReader {
         if (needed > mesh_.triangles.capacity())
           mesh_arrays::growTriangles(mesh_, budget_,
                                      std::max(2 * mesh_.triangles.capacity(), needed), file_);
-        appendPolygonTriangles(corners, mesh_.triangles);
+        appendPolygonTriangles(corners, mesh_.triangles, &polygons_);
       }
     }
   }
@@ -245,6 +247,7 @@ class BinaryPlyReader {
   bool swap_ = false;
   std::int64_t vertices_ = 0;
   MeshData mesh_;
+  std::vector<PolygonFace> polygons_;
 };
 }  // namespace
 

@@ -100,7 +100,8 @@ class SceneParser {
                                ": camera up vector is parallel to the view direction; "
                                "using another axis as up");
     }
-    scene.meshes = loadMeshes(meshLines);
+    std::vector<std::size_t> untiled(meshLines.size());
+    scene.meshes = loadMeshes(meshLines, untiled);
     // A file of vertices and no faces (a point cloud, or a PLY whose face
     // element is named otherwise) is a mesh, but draws nothing: say so, or
     // the user sees an empty scene and no reason.
@@ -109,6 +110,16 @@ class SceneParser {
         scene.warnings.push_back(file_.string() + ":" + std::to_string(meshLines[i].line) +
                                  ": mesh " + meshLines[i].file.filename().string() +
                                  " has no faces: it draws nothing");
+    // A face that winds both ways (a bow tie) has no triangulation; the
+    // user should know why its triangles spill over its outline.
+    for (std::size_t i = 0; i < meshLines.size(); ++i)
+      if (untiled[i] != 0)
+        scene.warnings.push_back(file_.string() + ":" + std::to_string(meshLines[i].line) +
+                                 ": mesh " + meshLines[i].file.filename().string() + " has " +
+                                 std::to_string(untiled[i]) +
+                                 (untiled[i] == 1 ? " face" : " faces") +
+                                 " that no triangles cover exactly (crossing themselves, or too "
+                                 "intricate to cut): their triangles may cover area outside them");
     checkLights(scene);
     return scene;
   }
@@ -239,13 +250,16 @@ class SceneParser {
   // ~10k triangles loads mostly on one thread, so several small meshes load
   // faster together than in turn. Of the meshes that fail, the first in the
   // file is reported.
-  std::vector<Mesh> loadMeshes(const std::vector<MeshLine>& lines) const {
+  // untiled[i]: mesh i's faces that no triangulation tiles.
+  std::vector<Mesh> loadMeshes(const std::vector<MeshLine>& lines,
+                               std::vector<std::size_t>& untiled) const {
     std::vector<std::optional<Mesh>> loaded(lines.size());
     std::vector<std::exception_ptr> failed(lines.size());
     tbb::parallel_for(std::size_t{0}, lines.size(), [&](std::size_t i) {
       const MeshLine& m = lines[i];
       try {
         MeshData data = meshes_ ? meshes_(m.file, budget_) : readMesh(m.file, budget_);
+        untiled[i] = data.untiledPolygons;
         budget_.reserve(normalsBytes(data, m.shading), "load",
                         "the normals of " + m.file.filename().string());
         if (LoadObserver* observer = budget_.loadObserver()) observer->phase(m.file, "normals");

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "meshtrace/geometry/polygon.h"
 #include "support/files.h"
 #include "support/input_errors.h"
 #include "support/paths.h"
@@ -77,6 +78,24 @@ TEST(OffReader, TriangulatesPolygonsByCuttingEars) {
   EXPECT_EQ(mesh.triangles[4], (TriangleIndices{1, 5, 2}));
 }
 
+// An L-shaped hexagon whose first ears would cut across its notch: read,
+// its four triangles lie inside it and cover it (each turns its way, and
+// their areas add up to its 3 square units).
+TEST(OffReader, CutsANonConvexFaceIntoTrianglesInsideIt) {
+  const MeshData mesh = readOffText(
+      "OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n");
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  double area = 0.0;
+  for (const TriangleIndices& t : mesh.triangles) {
+    const Vec3 doubled = glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
+                                    mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    EXPECT_GT(doubled.z, 0.0);
+    area += 0.5 * doubled.z;
+  }
+  EXPECT_DOUBLE_EQ(area, 3.0);
+  EXPECT_EQ(mesh.untiledPolygons, 0u);
+}
+
 TEST(OffReader, IgnoresPerFaceColourValuesAfterTheIndices) {
   const MeshData mesh = readOffText(
       "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1.0\n");
@@ -115,11 +134,13 @@ struct LargeOff {
   std::string text;
   MeshData expected;
   std::vector<std::size_t> faceLine;  // the line each face is on
+  std::size_t quadsRecut = 0;         // quads that are not convex
 };
 
 LargeOff largeOff(std::uint32_t vertices, std::uint32_t faces) {
   LargeOff off;
   off.text = "OFF\n" + std::to_string(vertices) + " " + std::to_string(faces) + " 0\n";
+  std::vector<PolygonFace> quads;
   std::size_t line = 2;
   for (std::uint32_t v = 0; v < vertices; ++v) {
     if (v % 997 == 0) off.text += "# a comment line\n", ++line;
@@ -137,8 +158,8 @@ LargeOff largeOff(std::uint32_t vertices, std::uint32_t faces) {
       const std::uint32_t d = (f * 17 + 3) % vertices;
       off.text += "4 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
                   " " + std::to_string(d) + " # a quad\n";
-      off.expected.triangles.push_back({a, b, c});
-      off.expected.triangles.push_back({a, c, d});
+      std::uint32_t corners[] = {a, b, c, d};
+      appendPolygonTriangles(corners, off.expected.triangles, &quads);
     } else {
       off.text += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
                   " 255 0 0\n";
@@ -146,12 +167,17 @@ LargeOff largeOff(std::uint32_t vertices, std::uint32_t faces) {
     }
     off.faceLine.push_back(++line);
   }
+  // The quads join vertices at random, so many are not convex and are cut
+  // again: here face by face in one list, in the reader chunk by chunk.
+  off.quadsRecut =
+      tileNonConvexPolygons(off.expected.vertices, quads, off.expected.triangles).recut;
   return off;
 }
 
 TEST(OffReader, ReadsAFileOfManyChunksAsWritten) {
   const LargeOff off = largeOff(60000, 120000);
   ASSERT_GT(off.text.size(), std::size_t{4} << 20) << "several chunks";
+  ASSERT_GT(off.quadsRecut, 1000u);
   const MeshData mesh = readOffText(off.text);
   EXPECT_EQ(mesh.vertices, off.expected.vertices);
   EXPECT_EQ(mesh.triangles, off.expected.triangles);

@@ -42,7 +42,7 @@ TEST_P(BinaryPlyLayouts, ReadTheMeshOffsReaderReads) {
   ASSERT_TRUE(ply.has_value());
   EXPECT_EQ(ply->vertices, off.vertices);
   EXPECT_EQ(ply->triangles, off.triangles);
-  EXPECT_EQ(ply->triangles.size(), 2u + 1u + 4u + 1u + 3u + 2u);
+  EXPECT_EQ(ply->triangles.size(), 2u + 1u + 4u + 1u + 3u + 2u + 4u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Layouts, BinaryPlyLayouts,

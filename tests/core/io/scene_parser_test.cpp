@@ -195,6 +195,18 @@ TEST(SceneParser, WarnsButAcceptsAMeshWithoutFaces) {
   expectMentions(scene.warnings[0], {"s.sce:3", "points.off", "no faces"});
 }
 
+// A bow tie (its four corners cross) has no triangulation: its triangles
+// cover area it does not, and the user is told which mesh line has it.
+TEST(SceneParser, WarnsAboutAFaceThatCrossesItself) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "bowtie.off", "OFF\n4 1 0\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n4 0 1 2 3\n");
+  const auto sceneFile =
+      test::writeFile(dir / "s.sce", kCameraLine + "mesh bowtie.off FLAT " + kMaterial + "\n");
+  const Scene scene = loadScene(sceneFile);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  expectMentions(scene.warnings[0], {"s.sce:2", "bowtie.off", "1 face", "crossing themselves"});
+}
+
 // --- bad scene files -------------------------------------------------------
 
 TEST(SceneParser, RejectsAMissingSceneFileNamingIt) {

@@ -1,6 +1,7 @@
 #pragma once
 // A triangle mesh with its shading mode, normals and bounding box.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string_view>
@@ -23,6 +24,9 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 struct MeshData {
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
+  // Faces of the file that no triangulation tiles (they cross themselves):
+  // their triangles may cover area outside them (polygon.h).
+  std::size_t untiledPolygons = 0;
 };
 
 class Mesh {
