@@ -28,6 +28,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// fuzz.sh runs this harness with -close_fd_mask=3, which sends the tool's
+// output, stderr too, to /dev/null; the harness says why it stopped on a
+// copy of stderr taken before that (LLVMFuzzerInitialize runs first).
+FILE* harnessLog = stderr;
+
 const fs::path& scratch() {
   static const fs::path dir =
       fs::temp_directory_path() / ("meshtrace-fuzz-cli-" + std::to_string(getpid()));
@@ -53,12 +58,17 @@ void makeScenes(const fs::path& dir) {
   std::string meshes = "camera 2 2 4  0.5 0.5 0.5  0 1 0  50 8 6\nlight 3 5 4  1 1 1\n";
   for (const auto& e : fs::directory_iterator(MESHTRACE_FUZZ_MESHES)) {
     if (e.path().extension() != ".off") continue;
+    // Copied through streams, whose reads and writes are retried when a
+    // signal interrupts them: libFuzzer's timeout alarm goes off every few
+    // seconds, and fs::copy_file gives up on the first interrupted call.
     // A failure here is the harness's, not the tool's: say what it was.
-    std::error_code ec;
-    fs::copy_file(e.path(), dir / e.path().filename(), ec);
-    if (ec) {
-      std::fprintf(stderr, "harness: cannot copy %s into %s: %s\n", e.path().c_str(), dir.c_str(),
-                   ec.message().c_str());
+    std::ifstream in(e.path(), std::ios::binary);
+    std::ofstream out(dir / e.path().filename(), std::ios::binary);
+    out << in.rdbuf();
+    out.close();
+    if (!in || !out) {
+      std::fprintf(harnessLog, "harness: cannot copy %s into %s\n", e.path().c_str(),
+                   dir.c_str());
       std::abort();
     }
     meshes += "mesh " + e.path().filename().string() +
@@ -89,6 +99,18 @@ std::vector<std::string> arguments(std::string_view input) {
 
 }  // namespace
 
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  const int copy = dup(STDERR_FILENO);
+  if (copy >= 0) {
+    if (FILE* log = fdopen(copy, "w")) {
+      // Unbuffered, as stderr is: the message must be out before abort().
+      std::setvbuf(log, nullptr, _IONBF, 0);
+      harnessLog = log;
+    }
+  }
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fs::remove_all(scratch());
   makeScenes(scratch());
@@ -105,7 +127,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!e.is_regular_file() || !isImage(e.path())) continue;
     const meshtrace::Image8 image = meshtrace::readImage(e.path());
     if (image.width != kWidth || image.height != kHeight) {
-      std::fprintf(stderr, "%s reads back as %dx%d\n", e.path().c_str(), image.width, image.height);
+      std::fprintf(harnessLog, "%s reads back as %dx%d\n", e.path().c_str(), image.width,
+                   image.height);
       std::abort();
     }
   }
