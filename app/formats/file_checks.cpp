@@ -65,6 +65,17 @@ class PlyCheck {
       : file_(file), bytes_(bytes), header_(readPlyHeader(file, bytes, bytes.size())) {}
 
   ElementCounts run() {
+    // OpenMesh's PLY reader adds each face as it reads it, against the
+    // vertices read so far: with the faces first it finds none ("face 0
+    // refers to vertex 0 of 0"). Say what is wrong instead.
+    for (const PlyElement& e : header_.elements) {
+      if (e.name == "vertex") break;
+      for (const PlyProperty& p : e.properties)
+        if (isPlyCornerList(e, p))
+          failAt(e.line, "element " + e.name +
+                             " comes before element vertex: OpenMesh's PLY reader, which "
+                             "reads this file, needs the vertices first");
+    }
     const std::string_view body = bytes_.substr(header_.bodyStart);
     if (header_.format == "ascii")
       walkAscii(body);

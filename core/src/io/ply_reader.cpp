@@ -108,7 +108,8 @@ class BinaryPlyReader {
         }
       }
       if (e.name == "face") {
-        if (vertexElements == 0) return false;
+        // Faces may come first: their indices are checked against the
+        // header's vertex count, and the polygons cut once all is read.
         ++faceElements;
         int cornerLists = 0;
         for (const PlyProperty& p : e.properties) {

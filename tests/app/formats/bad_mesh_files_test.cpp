@@ -50,6 +50,12 @@ const std::string kNanVertices3 =
 
 std::vector<BadMesh> badMeshes() {
   return {
+      // OpenMesh's reader would say "face 0 refers to vertex 0 of 0".
+      {"faces_first.ply",
+       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+       "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+       "3 0 1 2\n" + kVertices3,
+       {"faces_first.ply:3", "element face comes before element vertex"}},
       {"no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", {"no end_header"}},
       {"not_ply.ply", "plx\nformat ascii 1.0\nend_header\n", {"not_ply.ply:1", "'ply'"}},
       {"bad_format.ply", "ply\nformat text 1.0\nend_header\n", {"bad_format.ply:2", "format"}},

@@ -76,6 +76,30 @@ TEST(BinaryPly, ReadsAFileLargerThanItsBufferAsOffDoes) {
   }
 }
 
+// Faces may come before the vertices they index: the header gives the
+// vertex count that their indices are checked against.
+TEST(BinaryPly, ReadsFacesListedBeforeTheirVertices) {
+  const test::PolygonMesh polygons = test::polygonMesh();
+  test::PlyValues values(false);
+  for (const auto& face : polygons.faces) {
+    values.put("uchar", static_cast<double>(face.size()));
+    for (std::uint32_t i : face) values.put("int", i);
+  }
+  for (const Vec3& v : polygons.vertices)
+    for (int k = 0; k < 3; ++k) values.put("double", v[k]);
+  const std::string declarations =
+      "element face " + std::to_string(polygons.faces.size()) +
+      "\nproperty list uchar int vertex_indices\nelement vertex " +
+      std::to_string(polygons.vertices.size()) +
+      "\nproperty double x\nproperty double y\nproperty double z\n";
+  const std::optional<MeshData> ply =
+      readPlyBytes(test::plyHeader(PlyLayout{}, declarations) + values.bytes());
+  ASSERT_TRUE(ply.has_value());
+  const MeshData off = readOffOf(polygons);
+  EXPECT_EQ(ply->vertices, off.vertices);
+  EXPECT_EQ(ply->triangles, off.triangles);
+}
+
 TEST(BinaryPly, LeavesAsciiToOtherReaders) {
   EXPECT_FALSE(
       readPlyBytes("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"

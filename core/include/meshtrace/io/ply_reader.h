@@ -15,7 +15,8 @@ namespace meshtrace {
 // element lists its corners with integer indices; other elements and
 // properties are skipped by their size. Returns std::nullopt, having read
 // only the header, for a PLY file it leaves to other readers: ASCII,
-// faces before the vertices, more than one vertex or face element. Throws InputError
+// more than one vertex or face element, float corner indices. Faces may
+// come before the vertices. Throws InputError
 // naming the file and the element ("face 17") on bad input: a header
 // readPlyHeader refuses, a truncated body, corner counts below 3 or above
 // the vertex count, indices out of range, non-finite coordinates. The
