@@ -85,8 +85,12 @@ void ViewerApp::applyOptions() {
   for (const std::string& dir : o.sceneDirs)
     addFolder(state_, dir, std::filesystem::path(dir).filename().string());
   if (o.scene.empty()) return;
-  if (o.noDefaultDirs)
-    addFolder(state_, std::filesystem::path(o.scene).parent_path(), "this scene's folder");
+  if (o.noDefaultDirs) {
+    // A scene named without a folder is in the current one ("" is none).
+    std::filesystem::path folder = std::filesystem::path(o.scene).parent_path();
+    if (folder.empty()) folder = ".";
+    addFolder(state_, folder, "this scene's folder");
+  }
   openScene(state_, o.scene);
   state_.sceneOptionsPending = true;
   state_.depthCheckPending = o.draw.cut && o.depthGiven;

@@ -64,6 +64,23 @@ TEST(Drop, OpensASceneAndAddsAFolder) {
   EXPECT_EQ(app.state().folders.size(), 1u) << "a folder dropped twice is listed once";
 }
 
+// `viewer --no-default-dirs copy.sce` from the scene's folder: the folder
+// listed is that one, not "not a folder: " (the empty parent of a bare
+// file name).
+TEST(StartFolders, ASceneNamedWithoutAFolderListsTheCurrentOne) {
+  const auto dir = test::scratchDir();
+  fs::copy_file(testScenes() / "viewer_test.sce", dir / "copy.sce");
+  for (const char* mesh : {"ball.off", "box.off"}) fs::copy_file(testScenes() / mesh, dir / mesh);
+  fs::current_path(dir);
+  ViewerOptions o = bareOptions();
+  o.scene = "copy.sce";
+  ViewerApp app(o, "viewer");
+  settle(app);
+  ASSERT_EQ(app.state().folders.size(), 1u);
+  EXPECT_TRUE(app.state().folders[0].error.empty()) << app.state().folders[0].error;
+  EXPECT_EQ(app.state().folders[0].scenes, std::vector<fs::path>{fs::canonical(dir) / "copy.sce"});
+}
+
 TEST(Drop, RefusesAFileThatIsNotAScene) {
   ViewerApp app(bareOptions(), "viewer");
   drop(app, {(testScenes() / "viewer_test.sce").string()});
