@@ -88,12 +88,11 @@ class ReadProgress {
 // pass counts from the file's header, unchecked.
 class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
  public:
-  CornerImporter(PointMesh& mesh, MeshData& out, std::vector<PolygonFace>& polygons,
-                 MemoryBudget& budget, std::string name, ReadProgress& progress)
+  CornerImporter(PointMesh& mesh, MeshData& out, MemoryBudget& budget, std::string name,
+                 ReadProgress& progress)
       : ImporterT(mesh),
         mesh_(mesh),
         out_(out),
-        polygons_(polygons),
         budget_(budget),
         name_(std::move(name)),
         progress_(progress) {}
@@ -130,7 +129,7 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
     indices_.clear();
     for (const OpenMesh::VertexHandle& c : corners)
       indices_.push_back(static_cast<std::uint32_t>(c.idx()));
-    appendPolygonTriangles(indices_, out_.triangles, &polygons_);
+    appendPolygonTriangles(indices_, out_.triangles, &out_.polygons);
     return mesh_.new_face();
   }
 
@@ -171,7 +170,6 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
 
   PointMesh& mesh_;
   MeshData& out_;
-  std::vector<PolygonFace>& polygons_;
   MemoryBudget& budget_;
   std::string name_;
   std::size_t plannedVertices_ = 0;
@@ -186,8 +184,7 @@ class CornerImporter : public OpenMesh::IO::ImporterT<PointMesh> {
 // rather than corner lists. Walks each face's loop (checking every handle
 // against the arrays, and stopping after as many steps as there are
 // halfedges) into triangles; returns what is wrong, or "".
-std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out,
-                                 std::vector<PolygonFace>& polygons) {
+std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out) {
   const auto halfedges = static_cast<int>(mesh.n_halfedges());
   const auto vertices = static_cast<int>(mesh.n_vertices());
   std::vector<std::uint32_t> corners;
@@ -210,7 +207,7 @@ std::string collectHalfedgeFaces(const PointMesh& mesh, MeshData& out,
     } while (h != first);
     if (corners.size() < 3)
       return face + " has " + std::to_string(corners.size()) + " corners; at least 3 are needed";
-    appendPolygonTriangles(corners, out.triangles, &polygons);
+    appendPolygonTriangles(corners, out.triangles, &out.polygons);
   }
   return "";
 }
@@ -324,14 +321,13 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
   const auto [fileBytes, counts] = checkBeforeReading(file);
   ReadProgress progress(budget.loadObserver(), file, fileBytes, counts);
   MeshData out;
-  std::vector<PolygonFace> polygons;
   PointMesh mesh;
   std::string problem;
   bool read = false;
   {
     const std::lock_guard<std::mutex> hold(readLock());
     silenceOpenMesh();
-    CornerImporter importer(mesh, out, polygons, budget, file.filename().string(), progress);
+    CornerImporter importer(mesh, out, budget, file.filename().string(), progress);
     OpenMesh::IO::Options options;
     const CerrCatcher complaints;
     read = OpenMesh::IO::IOManager().read(file.string(), importer, options);
@@ -347,7 +343,7 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
     budget.reserve(mesh.n_halfedges() * sizeof(TriangleIndices), "load",
                    "the triangles of the " + std::to_string(mesh.n_faces()) + " faces of " +
                        file.filename().string());
-    problem = collectHalfedgeFaces(mesh, out, polygons);
+    problem = collectHalfedgeFaces(mesh, out);
   }
   if (!problem.empty()) throw InputError::inFile(file, problem);
   if (!read) {
@@ -360,7 +356,7 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
   }
   // OpenMesh's copy of the points goes with `mesh`.
   budget.release(mesh.n_vertices() * (kBytesPerVertex - sizeof(Vec3)));
-  out.untiledPolygons = tileNonConvexPolygons(out.vertices, polygons, out.triangles).untiled;
+  out.untiledPolygons = tileNonConvexPolygons(out.vertices, out.polygons, out.triangles).untiled;
   return out;
 }
 

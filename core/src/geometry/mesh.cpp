@@ -145,6 +145,19 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
   return normals;
 }
 
+FaceOfTriangle Mesh::faceOf(std::uint32_t triangle) const {
+  const std::vector<PolygonFace>& polygons = data_.polygons;
+  // The last polygon starting at or before the triangle, if any.
+  const auto after = std::upper_bound(
+      polygons.begin(), polygons.end(), triangle,
+      [](std::uint32_t t, const PolygonFace& p) { return t < p.firstTriangle; });
+  if (after == polygons.begin()) return {triangle, 3};
+  const PolygonFace& p = *(after - 1);
+  const std::uint32_t end = p.firstTriangle + p.corners - 2;
+  if (triangle < end) return {p.face, p.corners};
+  return {p.face + 1 + (triangle - end), 3};
+}
+
 Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material)
     : file_(std::move(file)), data_(std::move(data)), shading_(Shading::Flat), material_(material) {
   // Both passes in parallel (most of the rest is resize's zero fill of the

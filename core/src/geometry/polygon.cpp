@@ -14,9 +14,16 @@ namespace meshtrace {
 
 void appendPolygonTriangles(std::span<std::uint32_t> corners, std::vector<TriangleIndices>& out,
                             std::vector<PolygonFace>* polygons) {
-  if (polygons && corners.size() > 3)
-    polygons->push_back({static_cast<std::uint32_t>(out.size()),
-                         static_cast<std::uint32_t>(corners.size())});
+  if (polygons && corners.size() > 3) {
+    const auto first = static_cast<std::uint32_t>(out.size());
+    // Each triangle since the last polygon is a face of its own.
+    std::uint32_t face = first;
+    if (!polygons->empty()) {
+      const PolygonFace& last = polygons->back();
+      face = last.face + 1 + (first - (last.firstTriangle + last.corners - 2));
+    }
+    polygons->push_back({first, static_cast<std::uint32_t>(corners.size()), face});
+  }
   std::size_t left = corners.size();
   while (left > 3) {
     // One round: cut ears (i, i+1, i+2) for even i and keep their first

@@ -80,7 +80,7 @@ class OffParser {
                                           " announced in the header");
     }
     mesh_.untiledPolygons =
-        tileNonConvexPolygons(mesh_.vertices, polygons_, mesh_.triangles).untiled;
+        tileNonConvexPolygons(mesh_.vertices, mesh_.polygons, mesh_.triangles).untiled;
     return std::move(mesh_);
   }
 
@@ -246,9 +246,12 @@ class OffParser {
         return;
       }
     }
+    // The chunk numbered its faces and triangles from its first.
+    const auto firstFace = static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_));
     for (PolygonFace face : c.polygons) {
       face.firstTriangle += static_cast<std::uint32_t>(mesh_.triangles.size());
-      polygons_.push_back(face);
+      face.face += firstFace;
+      mesh_.polygons.push_back(face);
     }
     mesh_.triangles.insert(mesh_.triangles.end(), c.triangles.begin(), c.triangles.end());
     if (c.piece.nulAfter()) {
@@ -323,7 +326,6 @@ class OffParser {
   MemoryBudget& budget_;
   std::int64_t nv_ = 0, nf_ = 0;
   MeshData mesh_;
-  std::vector<PolygonFace> polygons_;
   std::int64_t elements_ = 0;  // elements read before the first error
   std::exception_ptr error_;
 };

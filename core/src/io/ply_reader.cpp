@@ -90,7 +90,7 @@ class BinaryPlyReader {
         skipElement(e);
     }
     mesh_.untiledPolygons =
-        tileNonConvexPolygons(mesh_.vertices, polygons_, mesh_.triangles).untiled;
+        tileNonConvexPolygons(mesh_.vertices, mesh_.polygons, mesh_.triangles).untiled;
     return std::move(mesh_);
   }
 
@@ -201,7 +201,7 @@ class BinaryPlyReader {
         if (needed > mesh_.triangles.capacity())
           mesh_arrays::growTriangles(mesh_, budget_,
                                      std::max(2 * mesh_.triangles.capacity(), needed), file_);
-        appendPolygonTriangles(corners, mesh_.triangles, &polygons_);
+        appendPolygonTriangles(corners, mesh_.triangles, &mesh_.polygons);
       }
     }
   }
@@ -248,7 +248,6 @@ class BinaryPlyReader {
   bool swap_ = false;
   std::int64_t vertices_ = 0;
   MeshData mesh_;
-  std::vector<PolygonFace> polygons_;
 };
 }  // namespace
 

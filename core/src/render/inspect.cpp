@@ -24,6 +24,7 @@ SurfaceRecord describeSurface(const Scene& scene, const Hit& hit, const SurfaceP
   s.geometricNormal = sp.normal;
   if (hit.ref.kind == ObjectKind::Mesh) {
     const Mesh& mesh = scene.meshes[hit.ref.object];
+    s.face = mesh.faceOf(hit.ref.triangle);
     s.alpha = hit.alpha();
     s.beta = hit.beta;
     s.gamma = hit.gamma;

@@ -7,6 +7,8 @@
 
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/render.h"
+#include "support/files.h"
+#include "support/paths.h"
 #include "viewer/model/inspector_report.h"
 #include "viewer/model/line_breaks.h"
 #include "viewer/model/pane_heights.h"
@@ -117,6 +119,38 @@ TEST(PaneHeights, TheSceneListLeavesTheObjectsListItsRoomAndKeepsAShare) {
   EXPECT_EQ(sceneListHeight(800, 900, 600, 150), 600 - kMinPane);
   EXPECT_EQ(sceneListHeight(0, 900, 100, 150), kMinPane) << "never vanishes";
   EXPECT_EQ(sceneListHeight(0, 30, 100, 150), 30);
+}
+
+// A polygon's triangles are numbered apart from the file's faces: the
+// inspector names the face a hit triangle was cut from, so that the user
+// can find it in the file. Face 0 is a triangle out of view, face 1 an L
+// (four triangles), face 2 a triangle: triangle 5.
+TEST(InspectorReport, NamesTheFaceOfTheFileATriangleWasCutFrom) {
+  const auto dir = test::scratchDir();
+  test::writeFile(dir / "l.off",
+                  "OFF\n11 3 0\n50 50 0\n51 50 0\n50 51 0\n"
+                  "0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
+                  "3 1 0\n2 2 0\n"
+                  "3 0 1 2\n6 3 4 5 6 7 8\n3 4 9 10\n");
+  const Scene scene = loadScene(test::writeFile(
+      dir / "l.sce",
+      "camera 1.5 1 10  1.5 1 0  0 1 0  20  300 200\nlight 1 1 10  1 1 1\n"
+      "mesh l.off FLAT  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n"));
+  const SceneIntersector intersector(scene, TraceOptions{});
+  const auto triangleLine = [&](double x, double y) {
+    const PixelInspection in = inspectPixel(intersector, Camera(scene.camera), x, y);
+    const InspectorReport r =
+        inspectorReport(in, 0, 0, true, [](const PrimitiveRef&) { return std::string("l"); });
+    for (const InspectorLine& line : r.bounces.at(0).lines)
+      if (line.text.rfind("triangle", 0) == 0) return line.text;
+    return std::string("no triangle line");
+  };
+  // The middle row sees y = 1; a unit is 100 / (10 tan 10 deg) = 56.7
+  // pixels either side of x = 1.5 at column 150. x = 0.5 is in the L's
+  // upright, x = 2.3 in the last triangle.
+  const std::string inL = triangleLine(93.0, 100.0);
+  EXPECT_NE(inL.find("of face 1 (6 corners)"), std::string::npos) << inL;
+  EXPECT_EQ(triangleLine(195.0, 100.0), "triangle      5 (face 2)");
 }
 
 }  // namespace

@@ -115,6 +115,28 @@ TEST(PolygonTriangles, APointOfAHugeDiscLiesInFewTriangleBoxes) {
 }
 
 
+// Faces of 3 to 7 corners in a mixed order: the records numbered as they
+// go lead each triangle back to its face, counted here face by face.
+TEST(PolygonTriangles, EachTriangleLeadsBackToItsFace) {
+  const std::vector<std::uint32_t> cornerCounts = {3, 4, 3, 3, 6, 7, 3, 4, 4, 3, 5};
+  MeshData data;
+  std::vector<FaceOfTriangle> expected;
+  for (std::uint32_t f = 0; f < cornerCounts.size(); ++f) {
+    std::vector<std::uint32_t> corners(cornerCounts[f]);
+    std::iota(corners.begin(), corners.end(), 0u);
+    appendPolygonTriangles(corners, data.triangles, &data.polygons);
+    for (std::uint32_t t = 0; t + 2 < cornerCounts[f]; ++t) expected.push_back({f, cornerCounts[f]});
+  }
+  data.vertices.assign(7, Vec3(0.0));
+  const Mesh mesh("faces.off", std::move(data), Shading::Flat, Material{});
+  ASSERT_EQ(mesh.triangles().size(), expected.size());
+  for (std::uint32_t t = 0; t < expected.size(); ++t) {
+    SCOPED_TRACE(t);
+    EXPECT_EQ(mesh.faceOf(t).face, expected[t].face);
+    EXPECT_EQ(mesh.faceOf(t).corners, expected[t].corners);
+  }
+}
+
 // --- polygons that are not convex (tileNonConvexPolygons) -------------------
 
 // A polygon in its own plane (2D points, counter-clockwise) and the vertex

@@ -181,6 +181,13 @@ TEST(OffReader, ReadsAFileOfManyChunksAsWritten) {
   const MeshData mesh = readOffText(off.text);
   EXPECT_EQ(mesh.vertices, off.expected.vertices);
   EXPECT_EQ(mesh.triangles, off.expected.triangles);
+  // Every fifth face is a quad, each chunk numbering its own from its first
+  // face: the file's face numbers must come out whole.
+  ASSERT_EQ(mesh.polygons.size(), 120000u / 5);
+  for (std::uint32_t k = 0; k < mesh.polygons.size(); ++k) {
+    ASSERT_EQ(mesh.polygons[k].face, 5 * k);
+    ASSERT_EQ(mesh.polygons[k].corners, 4u);
+  }
 }
 
 // Of two bad lines in different chunks, the first in the file is reported,

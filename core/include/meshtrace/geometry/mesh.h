@@ -21,12 +21,31 @@ Shading parseShading(std::string_view name);
 
 using TriangleIndices = std::array<std::uint32_t, 3>;
 
+// A face of four corners or more among a mesh's triangles: face number
+// `face` of the file, whose corners - 2 triangles start at firstTriangle.
+// (Triangle indices fit 32 bits.)
+struct PolygonFace {
+  std::uint32_t firstTriangle = 0;
+  std::uint32_t corners = 0;
+  std::uint32_t face = 0;
+};
+
 struct MeshData {
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
+  // The faces of four corners or more, in triangle order: what leads from
+  // a triangle back to its face in the file (Mesh::faceOf). Empty for a
+  // mesh of triangles.
+  std::vector<PolygonFace> polygons;
   // Faces of the file that no triangulation tiles (they cross themselves):
   // their triangles may cover area outside them (polygon.h).
   std::size_t untiledPolygons = 0;
+};
+
+// The face of the mesh's file a triangle was cut from, and its corners.
+struct FaceOfTriangle {
+  std::uint32_t face = 0;
+  std::uint32_t corners = 3;
 };
 
 class Mesh {
@@ -45,6 +64,8 @@ class Mesh {
 
   // Switching to PHONG computes the vertex normals if they are missing.
   void setShading(Shading shading);
+
+  FaceOfTriangle faceOf(std::uint32_t triangle) const;
 
   // The shading normal at barycentrics (beta, gamma) of triangle `tri`.
   Vec3 shadingNormal(std::uint32_t tri, double beta, double gamma) const;

@@ -12,20 +12,15 @@
 
 namespace meshtrace {
 
-// A face of four corners or more among a mesh's triangles: its corners - 2
-// triangles start at firstTriangle. (Triangle indices fit 32 bits; at 8
-// bytes a face, the records take at most a third of the triangles' room.)
-struct PolygonFace {
-  std::uint32_t firstTriangle = 0;
-  std::uint32_t corners = 0;
-};
-
 // Appends the triangles of the polygon whose vertex indices are `corners`
 // (at least 3, in order around it) to `out`: always corners.size() - 2 of
 // them, so a reader can plan the room before calling, each keeping the
 // polygon's winding. `corners` is the working space and is left reordered.
-// With `polygons`, a face of four corners or more is recorded there, for
-// tileNonConvexPolygons once the vertices are known.
+// With `polygons` (those of the faces appended to `out` so far, which all
+// went through here), a face of four corners or more is recorded there,
+// numbered by the faces before it, for tileNonConvexPolygons once the
+// vertices are known. At 12 bytes a face, the records take at most half
+// the triangles' room.
 //
 // Every other corner is cut off as an ear, (0 1 2), (2 3 4), ..., and the
 // corners left are cut again, until one triangle remains. A triangle and a

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "meshtrace/accel/intersector.h"
+#include "meshtrace/geometry/mesh.h"
 #include "meshtrace/util/counters.h"
 
 namespace meshtrace {
@@ -27,6 +28,7 @@ struct LightRecord {
 
 struct SurfaceRecord {
   PrimitiveRef ref;
+  FaceOfTriangle face;  // meshes only: the face of the file the triangle was cut from
   double t = 0.0;
   Vec3 point{0.0};
   double alpha = 0.0, beta = 0.0, gamma = 0.0;  // triangles only
