@@ -112,14 +112,17 @@ class SceneParser {
                                  " has no faces: it draws nothing");
     // A face that winds both ways (a bow tie) has no triangulation; the
     // user should know why its triangles spill over its outline.
-    for (std::size_t i = 0; i < meshLines.size(); ++i)
-      if (untiled[i] != 0)
-        scene.warnings.push_back(file_.string() + ":" + std::to_string(meshLines[i].line) +
-                                 ": mesh " + meshLines[i].file.filename().string() + " has " +
-                                 std::to_string(untiled[i]) +
-                                 (untiled[i] == 1 ? " face" : " faces") +
-                                 " that no triangles cover exactly (crossing themselves, or too "
-                                 "intricate to cut): their triangles may cover area outside them");
+    for (std::size_t i = 0; i < meshLines.size(); ++i) {
+      if (untiled[i] == 0) continue;
+      const bool one = untiled[i] == 1;
+      scene.warnings.push_back(
+          file_.string() + ":" + std::to_string(meshLines[i].line) + ": mesh " +
+          meshLines[i].file.filename().string() + " has " + std::to_string(untiled[i]) +
+          (one ? " face that no triangles cover exactly (it crosses itself, or is too intricate "
+                 "to cut): its triangles may cover area outside it"
+               : " faces that no triangles cover exactly (they cross themselves, or are too "
+                 "intricate to cut): their triangles may cover area outside them"));
+    }
     checkLights(scene);
     return scene;
   }
