@@ -356,7 +356,7 @@ MeshData readOpenMeshFile(const std::filesystem::path& file, MemoryBudget& budge
   }
   // OpenMesh's copy of the points goes with `mesh`.
   budget.release(mesh.n_vertices() * (kBytesPerVertex - sizeof(Vec3)));
-  out.untiledPolygons = tileNonConvexPolygons(out.vertices, out.polygons, out.triangles).untiled;
+  finishPolygons(out, budget, file);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <map>
 
+#include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/off_reader.h"
 
 namespace meshtrace {
@@ -37,6 +38,14 @@ std::vector<std::string> meshExtensions() {
 
 bool isMeshFile(const std::filesystem::path& file) {
   return readers().count(lowercase(file.extension().string())) != 0;
+}
+
+void finishPolygons(MeshData& mesh, MemoryBudget& budget, const std::filesystem::path& file) {
+  if (mesh.polygons.empty()) return;
+  budget.reserve(mesh.polygons.capacity() * sizeof(PolygonFace), "load",
+                 "the records of the " + std::to_string(mesh.polygons.size()) + " polygons of " +
+                     file.filename().string());
+  mesh.untiledPolygons = tileNonConvexPolygons(mesh.vertices, mesh.polygons, mesh.triangles).untiled;
 }
 
 MeshData readMesh(const std::filesystem::path& file, MemoryBudget& budget) {

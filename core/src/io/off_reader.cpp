@@ -19,6 +19,7 @@
 #include "io/text.h"
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/mesh_reader.h"
 
 namespace meshtrace {
 
@@ -79,8 +80,7 @@ class OffParser {
                                           " of " + std::to_string(vertex ? nv_ : nf_) +
                                           " announced in the header");
     }
-    mesh_.untiledPolygons =
-        tileNonConvexPolygons(mesh_.vertices, mesh_.polygons, mesh_.triangles).untiled;
+    finishPolygons(mesh_, budget_, file_);
     return std::move(mesh_);
   }
 

@@ -15,6 +15,7 @@
 #include "io/mesh_arrays.h"
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
+#include "meshtrace/io/mesh_reader.h"
 #include "meshtrace/io/ply_header.h"
 #include "meshtrace/util/quoted.h"
 
@@ -89,8 +90,7 @@ class BinaryPlyReader {
       else
         skipElement(e);
     }
-    mesh_.untiledPolygons =
-        tileNonConvexPolygons(mesh_.vertices, mesh_.polygons, mesh_.triangles).untiled;
+    finishPolygons(mesh_, budget_, file_);
     return std::move(mesh_);
   }
 

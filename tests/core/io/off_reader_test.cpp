@@ -96,6 +96,24 @@ TEST(OffReader, CutsANonConvexFaceIntoTrianglesInsideIt) {
   EXPECT_EQ(mesh.untiledPolygons, 0u);
 }
 
+// The polygons' records stay with the mesh (the inspector names a
+// triangle's face from them), so the memory plan counts them with the
+// vertices and triangles: exactly the arrays' room, nothing unplanned.
+TEST(OffReader, PlansThePolygonRecordsItKeeps) {
+  std::string text = "OFF\n2002 1000 0\n";
+  for (int i = 0; i <= 1000; ++i)
+    text += std::to_string(i) + " 0 0\n" + std::to_string(i) + " 1 0\n";
+  for (int i = 0; i < 1000; ++i)
+    text += "4 " + std::to_string(2 * i) + " " + std::to_string(2 * i + 2) + " " +
+            std::to_string(2 * i + 3) + " " + std::to_string(2 * i + 1) + "\n";
+  MemoryBudget budget(std::uint64_t{1} << 30);
+  const MeshData mesh = readOff(test::writeFile(test::scratchDir() / "quads.off", text), budget);
+  ASSERT_EQ(mesh.polygons.size(), 1000u);
+  EXPECT_EQ(budget.planned(), mesh.vertices.capacity() * sizeof(Vec3) +
+                                  mesh.triangles.capacity() * sizeof(TriangleIndices) +
+                                  mesh.polygons.capacity() * sizeof(PolygonFace));
+}
+
 TEST(OffReader, IgnoresPerFaceColourValuesAfterTheIndices) {
   const MeshData mesh = readOffText(
       "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1.0\n");

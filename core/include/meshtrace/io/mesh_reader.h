@@ -33,4 +33,11 @@ bool isMeshFile(const std::filesystem::path& file);
 // extension is read as OFF.
 MeshData readMesh(const std::filesystem::path& file, MemoryBudget& budget);
 
+// A reader's last step, once `mesh` is read with its polygons recorded by
+// appendPolygonTriangles: reserves the records' room in `budget` (they
+// stay with the mesh, 12 bytes a polygon) and cuts again the faces that
+// are not convex (tileNonConvexPolygons), counting in
+// mesh.untiledPolygons those no triangles cover exactly.
+void finishPolygons(MeshData& mesh, MemoryBudget& budget, const std::filesystem::path& file);
+
 }  // namespace meshtrace
