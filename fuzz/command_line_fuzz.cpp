@@ -67,8 +67,7 @@ void makeScenes(const fs::path& dir) {
     out << in.rdbuf();
     out.close();
     if (!in || !out) {
-      std::fprintf(harnessLog, "harness: cannot copy %s into %s\n", e.path().c_str(),
-                   dir.c_str());
+      std::fprintf(harnessLog, "harness: cannot copy %s into %s\n", e.path().c_str(), dir.c_str());
       std::abort();
     }
     meshes += "mesh " + e.path().filename().string() +

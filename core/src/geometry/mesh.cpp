@@ -148,14 +148,13 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
 FaceOfTriangle Mesh::faceOf(std::uint32_t triangle) const {
   const std::vector<PolygonFace>& polygons = data_.polygons;
   // The last polygon starting at or before the triangle, if any.
-  const auto after = std::upper_bound(
-      polygons.begin(), polygons.end(), triangle,
-      [](std::uint32_t t, const PolygonFace& p) { return t < p.firstTriangle; });
+  const auto after =
+      std::upper_bound(polygons.begin(), polygons.end(), triangle,
+                       [](std::uint32_t t, const PolygonFace& p) { return t < p.firstTriangle; });
   if (after == polygons.begin()) return {triangle, 3};
   const PolygonFace& p = *(after - 1);
-  const std::uint32_t end = p.firstTriangle + p.corners - 2;
-  if (triangle < end) return {p.face, p.corners};
-  return {p.face + 1 + (triangle - end), 3};
+  if (triangle < p.endTriangle()) return {p.face, p.corners};
+  return {p.faceAfter(triangle), 3};
 }
 
 Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material)

@@ -5,10 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <limits>
 #include <numeric>
-
-#include <glm/glm.hpp>
 
 namespace meshtrace {
 
@@ -16,12 +15,7 @@ void appendPolygonTriangles(std::span<std::uint32_t> corners, std::vector<Triang
                             std::vector<PolygonFace>* polygons) {
   if (polygons && corners.size() > 3) {
     const auto first = static_cast<std::uint32_t>(out.size());
-    // Each triangle since the last polygon is a face of its own.
-    std::uint32_t face = first;
-    if (!polygons->empty()) {
-      const PolygonFace& last = polygons->back();
-      face = last.face + 1 + (first - (last.firstTriangle + last.corners - 2));
-    }
+    const std::uint32_t face = polygons->empty() ? first : polygons->back().faceAfter(first);
     polygons->push_back({first, static_cast<std::uint32_t>(corners.size()), face});
   }
   std::size_t left = corners.size();
@@ -51,21 +45,20 @@ double orient(const Point& a, const Point& b, const Point& c) {
 
 // One polygon's work space, reused from polygon to polygon on a thread.
 struct PolygonScratch {
-  std::vector<std::uint32_t> corners;                // vertex index of each corner, in order
-  std::vector<TriangleIndices> positionTriangles;    // the triangles, as corner positions
+  std::vector<std::uint32_t> corners;              // vertex index of each corner, in order
+  std::vector<TriangleIndices> positionTriangles;  // the triangles, as corner positions
   std::vector<std::uint32_t> positions;
-  std::vector<Point> points;                         // the corners projected
-  std::vector<std::uint32_t> prev, next;             // the ring of corners left
-  std::vector<char> reflex;                          // a corner left that turns <= zero
-  std::vector<std::uint32_t> reflexCorners;          // every corner ever flagged reflex
+  std::vector<Point> points;                 // the corners projected
+  std::vector<std::uint32_t> prev, next;     // the ring of corners left
+  std::vector<char> reflex;                  // a corner left that turns <= zero
+  std::vector<std::uint32_t> reflexCorners;  // every corner ever flagged reflex
   std::vector<TriangleIndices> clipped;
 };
 
 // A polygon's corners in order, from the triangles appendPolygonTriangles
 // made of them: the same cuts made on the positions 0 .. n-1 say which
 // position each triangle's corners hold.
-void recoverCorners(std::span<const TriangleIndices> triangles, std::size_t n,
-                    PolygonScratch& s) {
+void recoverCorners(std::span<const TriangleIndices> triangles, std::size_t n, PolygonScratch& s) {
   s.positionTriangles.clear();
   if (n == 4) {
     // The common polygon, (0 1 2) (0 2 3), without the general cut's work.
@@ -93,7 +86,8 @@ double project(std::span<const Vec3> vertices, PolygonScratch& s) {
   const Vec3 origin = vertices[s.corners[0]];
   Vec3 normal(0.0);
   for (std::size_t i = 0; i < n; ++i)
-    normal += glm::cross(vertices[s.corners[i]] - origin, vertices[s.corners[(i + 1) % n]] - origin);
+    normal +=
+        glm::cross(vertices[s.corners[i]] - origin, vertices[s.corners[(i + 1) % n]] - origin);
   const Vec3 m = glm::abs(normal);
   const int axis = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
   if (!(m[axis] > 0.0) || !std::isfinite(m[axis])) return 0.0;
@@ -119,7 +113,8 @@ bool hasArea(std::span<const Vec3> vertices, std::span<const TriangleIndices> tr
   const Vec3 origin = vertices[triangles[0][0]];
   double extent = 0.0, largest = 0.0;
   for (const TriangleIndices& t : triangles) {
-    const Vec3 a = vertices[t[0]] - origin, b = vertices[t[1]] - origin, c = vertices[t[2]] - origin;
+    const Vec3 a = vertices[t[0]] - origin, b = vertices[t[1]] - origin,
+               c = vertices[t[2]] - origin;
     extent = std::max({extent, glm::length(a), glm::length(b), glm::length(c)});
     largest = std::max(largest, glm::length(glm::cross(b - a, c - a)));
   }
@@ -179,8 +174,7 @@ bool clipEars(PolygonScratch& s, double zero) {
       // hole is joined to its outline by a cut passes a point twice) does
       // not block it.
       if (pq == pa || pq == pb || pq == pc) continue;
-      if (orient(pa, pb, pq) >= -zero && orient(pb, pc, pq) >= -zero &&
-          orient(pc, pa, pq) >= -zero)
+      if (orient(pa, pb, pq) >= -zero && orient(pb, pc, pq) >= -zero && orient(pc, pa, pq) >= -zero)
         return false;
     }
     return true;
@@ -236,7 +230,8 @@ PolygonTiling tileNonConvexPolygons(std::span<const Vec3> vertices,
         PolygonScratch s;
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
           const PolygonFace& face = polygons[k];
-          const std::span<TriangleIndices> own = triangles.subspan(face.firstTriangle, face.corners - 2);
+          const std::span<TriangleIndices> own =
+              triangles.subspan(face.firstTriangle, face.corners - 2);
           recoverCorners(own, face.corners, s);
           const double zero = project(vertices, s);
           if (zero == 0.0) {

@@ -45,7 +45,8 @@ void finishPolygons(MeshData& mesh, MemoryBudget& budget, const std::filesystem:
   budget.reserve(mesh.polygons.capacity() * sizeof(PolygonFace), "load",
                  "the records of the " + std::to_string(mesh.polygons.size()) + " polygons of " +
                      file.filename().string());
-  mesh.untiledPolygons = tileNonConvexPolygons(mesh.vertices, mesh.polygons, mesh.triangles).untiled;
+  mesh.untiledPolygons =
+      tileNonConvexPolygons(mesh.vertices, mesh.polygons, mesh.triangles).untiled;
 }
 
 MeshData readMesh(const std::filesystem::path& file, MemoryBudget& budget) {

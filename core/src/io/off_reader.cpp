@@ -247,7 +247,8 @@ class OffParser {
       }
     }
     // The chunk numbered its faces and triangles from its first.
-    const auto firstFace = static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_));
+    const auto firstFace =
+        static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_));
     for (PolygonFace face : c.polygons) {
       face.firstTriangle += static_cast<std::uint32_t>(mesh_.triangles.size());
       face.face += firstFace;
@@ -294,8 +295,7 @@ class OffParser {
     return v;
   }
 
-  void readFace(std::string_view line, std::int64_t index, std::size_t lineNumber,
-                Chunk& c) const {
+  void readFace(std::string_view line, std::int64_t index, std::size_t lineNumber, Chunk& c) const {
     const auto fail = [&](const std::string& what) {
       throw InputError::atLine(file_, lineNumber, "face " + std::to_string(index) + what);
     };

@@ -54,7 +54,8 @@ std::vector<BadMesh> badMeshes() {
       {"faces_first.ply",
        "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
        "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
-       "3 0 1 2\n" + kVertices3,
+       "3 0 1 2\n" +
+           kVertices3,
        {"faces_first.ply:3", "element face comes before element vertex"}},
       {"no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", {"no end_header"}},
       {"not_ply.ply", "plx\nformat ascii 1.0\nend_header\n", {"not_ply.ply:1", "'ply'"}},
@@ -142,8 +143,7 @@ std::vector<BadMesh> badMeshes() {
        "property uchar y\nproperty float z\nelement face 1\n"
        "property list uchar int vertex_indices\nelement face 0\n"
        "property list uchar int vertex_indices\nend_header\n" +
-           std::string(27, '\0') + "\3" + littleEndian32(0) + littleEndian32(1) +
-           littleEndian32(2),
+           std::string(27, '\0') + "\3" + littleEndian32(0) + littleEndian32(1) + littleEndian32(2),
        {"uchar_y_for_openmesh.ply", "cannot read its values", "unsupported conversion"}},
   };
 }

@@ -132,10 +132,10 @@ TEST(InspectorReport, NamesTheFaceOfTheFileATriangleWasCutFrom) {
                   "0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
                   "3 1 0\n2 2 0\n"
                   "3 0 1 2\n6 3 4 5 6 7 8\n3 4 9 10\n");
-  const Scene scene = loadScene(test::writeFile(
-      dir / "l.sce",
-      "camera 1.5 1 10  1.5 1 0  0 1 0  20  300 200\nlight 1 1 10  1 1 1\n"
-      "mesh l.off FLAT  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n"));
+  const Scene scene = loadScene(
+      test::writeFile(dir / "l.sce",
+                      "camera 1.5 1 10  1.5 1 0  0 1 0  20  300 200\nlight 1 1 10  1 1 1\n"
+                      "mesh l.off FLAT  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n"));
   const SceneIntersector intersector(scene, TraceOptions{});
   const auto triangleLine = [&](double x, double y) {
     const PixelInspection in = inspectPixel(intersector, Camera(scene.camera), x, y);

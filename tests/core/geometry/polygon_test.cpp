@@ -8,15 +8,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
+#include <glm/glm.hpp>
 #include <map>
 #include <numeric>
 #include <random>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace meshtrace {
 namespace {
@@ -114,7 +113,6 @@ TEST(PolygonTriangles, APointOfAHugeDiscLiesInFewTriangleBoxes) {
   std::printf("a point lies in at most %zu of %zu triangle boxes\n", most, boxes.size());
 }
 
-
 // Faces of 3 to 7 corners in a mixed order: the records numbered as they
 // go lead each triangle back to its face, counted here face by face.
 TEST(PolygonTriangles, EachTriangleLeadsBackToItsFace) {
@@ -125,7 +123,8 @@ TEST(PolygonTriangles, EachTriangleLeadsBackToItsFace) {
     std::vector<std::uint32_t> corners(cornerCounts[f]);
     std::iota(corners.begin(), corners.end(), 0u);
     appendPolygonTriangles(corners, data.triangles, &data.polygons);
-    for (std::uint32_t t = 0; t + 2 < cornerCounts[f]; ++t) expected.push_back({f, cornerCounts[f]});
+    for (std::uint32_t t = 0; t + 2 < cornerCounts[f]; ++t)
+      expected.push_back({f, cornerCounts[f]});
   }
   data.vertices.assign(7, Vec3(0.0));
   const Mesh mesh("faces.off", std::move(data), Shading::Flat, Material{});
@@ -154,7 +153,8 @@ PlacedPolygon place(std::vector<glm::dvec2> outline, double angle, double scale,
   const glm::dvec3 ru = std::cos(angle) * u + std::sin(angle) * v;
   const glm::dvec3 rv = glm::cross(axis, ru);
   PlacedPolygon out{std::move(outline), {}};
-  for (const glm::dvec2& p : out.outline) out.vertices.push_back(offset + scale * (p.x * ru + p.y * rv));
+  for (const glm::dvec2& p : out.outline)
+    out.vertices.push_back(offset + scale * (p.x * ru + p.y * rv));
   return out;
 }
 
@@ -191,7 +191,8 @@ double shoelaceArea(const std::vector<glm::dvec2>& outline) {
 ::testing::AssertionResult tiles(const std::vector<glm::dvec2>& outline,
                                  const std::vector<TriangleIndices>& triangles) {
   const std::size_t n = outline.size();
-  if (triangles.size() != n - 2) return ::testing::AssertionFailure() << triangles.size() << " triangles";
+  if (triangles.size() != n - 2)
+    return ::testing::AssertionFailure() << triangles.size() << " triangles";
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
   double area = 0.0, extent = 0.0;
   for (const glm::dvec2& p : outline) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
@@ -222,7 +223,8 @@ std::vector<glm::dvec2> randomStar(std::size_t n, std::mt19937& random) {
   std::uniform_real_distribution<double> radius(0.15, 1.0), jitter(0.05, 0.95);
   std::vector<glm::dvec2> out;
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2.0 * M_PI * (static_cast<double>(i) + jitter(random)) / static_cast<double>(n);
+    const double a =
+        2.0 * M_PI * (static_cast<double>(i) + jitter(random)) / static_cast<double>(n);
     const double r = radius(random);
     out.emplace_back(r * std::cos(a), r * std::sin(a));
   }
@@ -231,10 +233,10 @@ std::vector<glm::dvec2> randomStar(std::size_t n, std::mt19937& random) {
 
 TEST(PolygonTriangles, NonConvexPolygonsAreCutAgainIntoTrianglesThatTileThem) {
   std::vector<std::vector<glm::dvec2>> shapes = {
-      {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}},             // L
-      {{0, 0}, {2, 1}, {0, 2}, {0.5, 1}},                           // dart, 0-2 outside
-      {{0.5, 1}, {0, 0}, {2, 1}, {0, 2}},                           // dart, 0-2 inside
-      {{0, 0}, {4, 0}, {4, 3}, {3, 1}, {2, 3}, {1, 1}, {0, 3}},     // comb
+      {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}},                  // L
+      {{0, 0}, {2, 1}, {0, 2}, {0.5, 1}},                                // dart, 0-2 outside
+      {{0.5, 1}, {0, 0}, {2, 1}, {0, 2}},                                // dart, 0-2 inside
+      {{0, 0}, {4, 0}, {4, 3}, {3, 1}, {2, 3}, {1, 1}, {0, 3}},          // comb
       {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 1}},  // L with flat corners
   };
   std::mt19937 random(7);
@@ -274,7 +276,7 @@ TEST(PolygonTriangles, ConvexPolygonsKeepTheirTriangles) {
 // each appear twice, as separate corners at the same place.
 TEST(PolygonTriangles, AFaceWithAHoleJoinedByACutIsTiled) {
   const std::vector<glm::dvec2> outline = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0},
-                                            {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}};
+                                           {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}};
   const PlacedPolygon polygon = place(outline, 0.2, 1.0, Vec3(0.0));
   const Retiled r = retile(polygon);
   EXPECT_EQ(r.tiling.recut, 1u);
@@ -282,8 +284,8 @@ TEST(PolygonTriangles, AFaceWithAHoleJoinedByACutIsTiled) {
 }
 
 // A bow tie winds once each way around its two halves, and has no area in
-// all: no triangles cover it with its winding. It keeps its triangles and is counted, so that a reader
-// can say so.
+// all: no triangles cover it with its winding. It keeps its triangles and is counted, so that a
+// reader can say so.
 TEST(PolygonTriangles, ABowTieIsCountedAndKept) {
   const PlacedPolygon polygon = place({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 0.0, 1.0, Vec3(0.0));
   const Retiled r = retile(polygon);

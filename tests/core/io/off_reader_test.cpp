@@ -82,8 +82,8 @@ TEST(OffReader, TriangulatesPolygonsByCuttingEars) {
 // its four triangles lie inside it and cover it (each turns its way, and
 // their areas add up to its 3 square units).
 TEST(OffReader, CutsANonConvexFaceIntoTrianglesInsideIt) {
-  const MeshData mesh = readOffText(
-      "OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n");
+  const MeshData mesh =
+      readOffText("OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n");
   ASSERT_EQ(mesh.triangles.size(), 4u);
   double area = 0.0;
   for (const TriangleIndices& t : mesh.triangles) {

@@ -87,11 +87,10 @@ TEST(BinaryPly, ReadsFacesListedBeforeTheirVertices) {
   }
   for (const Vec3& v : polygons.vertices)
     for (int k = 0; k < 3; ++k) values.put("double", v[k]);
-  const std::string declarations =
-      "element face " + std::to_string(polygons.faces.size()) +
-      "\nproperty list uchar int vertex_indices\nelement vertex " +
-      std::to_string(polygons.vertices.size()) +
-      "\nproperty double x\nproperty double y\nproperty double z\n";
+  const std::string declarations = "element face " + std::to_string(polygons.faces.size()) +
+                                   "\nproperty list uchar int vertex_indices\nelement vertex " +
+                                   std::to_string(polygons.vertices.size()) +
+                                   "\nproperty double x\nproperty double y\nproperty double z\n";
   const std::optional<MeshData> ply =
       readPlyBytes(test::plyHeader(PlyLayout{}, declarations) + values.bytes());
   ASSERT_TRUE(ply.has_value());

@@ -204,7 +204,8 @@ TEST(SceneParser, WarnsAboutAFaceThatCrossesItself) {
       test::writeFile(dir / "s.sce", kCameraLine + "mesh bowtie.off FLAT " + kMaterial + "\n");
   const Scene scene = loadScene(sceneFile);
   ASSERT_EQ(scene.warnings.size(), 1u);
-  expectMentions(scene.warnings[0], {"s.sce:2", "bowtie.off", "has 1 face", "it crosses itself", "outside it"});
+  expectMentions(scene.warnings[0],
+                 {"s.sce:2", "bowtie.off", "has 1 face", "it crosses itself", "outside it"});
 }
 
 // --- bad scene files -------------------------------------------------------

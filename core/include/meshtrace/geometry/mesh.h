@@ -28,6 +28,11 @@ struct PolygonFace {
   std::uint32_t firstTriangle = 0;
   std::uint32_t corners = 0;
   std::uint32_t face = 0;
+
+  std::uint32_t endTriangle() const { return firstTriangle + corners - 2; }
+  // The face of triangle `t` at or past endTriangle() and before the next
+  // polygon: each triangle there is a face of its own.
+  std::uint32_t faceAfter(std::uint32_t t) const { return face + 1 + (t - endTriangle()); }
 };
 
 struct MeshData {
