@@ -197,6 +197,12 @@ void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool render
 void runFrames(ViewerApp& app, const FrameHost& host) {
   Clock::time_point lastInput = Clock::now() - std::chrono::seconds(1);
   FrameLogState log;
+  // The log's times count from here; this line places that zero on the
+  // system's monotonic clock (steady_clock is CLOCK_MONOTONIC on Linux), so
+  // that a frame can be matched with what another process recorded then.
+  if (app.state().options.frameLog)
+    std::fprintf(stderr, "log times count from %.1f ms of CLOCK_MONOTONIC\n",
+                 std::chrono::duration<double, std::milli>(log.start.time_since_epoch()).count());
   bool presented = true;
   while (host.keepRunning()) {
     if (presented && !app.display().imageWaiting())
