@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <numbers>
+#include <optional>
 
 #include "meshtrace/util/enum_names.h"
 
@@ -211,13 +213,46 @@ Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   return len > 0.0 && std::isfinite(len) ? n / len : Vec3(0.0);
 }
 
+namespace {
+
+// The angles at corners P, Q and R of a triangle whose widest corner is P,
+// from its edges P->Q, Q->R and R->P; nullopt when it has no area.
+std::optional<Vec3> anglesWidestFirst(const Vec3& pq, const Vec3& qr, const Vec3& rp) {
+  const double twiceArea = glm::length(glm::cross(pq, rp));
+  if (!(twiceArea > 0.0) || !std::isfinite(twiceArea)) return std::nullopt;
+  const double q = std::atan2(twiceArea, -glm::dot(pq, qr));
+  const double r = std::atan2(twiceArea, -glm::dot(qr, rp));
+  return Vec3(std::numbers::pi - q - r, q, r);
+}
+
+}  // namespace
+
 Vec3 cornerAngles(const Vec3& a, const Vec3& b, const Vec3& c) {
-  // The angle between two edges as atan2(|u x v|, u . v): accurate for angles
-  // near 0 and pi, where acos of a normalised dot product loses digits.
+  // Each angle is atan2(|u x v|, u . v) over the two edges at its corner,
+  // accurate near 0 and pi where acos of a normalised dot product loses
+  // digits. |u x v| is twice the area at every corner, so it is taken once,
+  // at the widest corner (facing the longest edge), between the two shorter
+  // edges: there its rounding error is smallest relative to its value. At a
+  // needle's tip, between two long edges, the cross product cancels, and
+  // the tip's angle would lose as many digits as the needle is thin.
+  // The two narrower corners (each under pi/2) take their atan2 with it;
+  // the widest is what is left of pi, at least pi/3, so that subtraction
+  // loses nothing that matters.
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double facingA = glm::dot(bc, bc), facingB = glm::dot(ca, ca), facingC = glm::dot(ab, ab);
+  std::optional<Vec3> w;
+  if (facingA >= facingB && facingA >= facingC) {
+    if ((w = anglesWidestFirst(ab, bc, ca))) return *w;
+  } else if (facingB >= facingC) {
+    if ((w = anglesWidestFirst(bc, ca, ab))) return {(*w)[2], (*w)[0], (*w)[1]};
+  } else {
+    if ((w = anglesWidestFirst(ca, ab, bc))) return {(*w)[1], (*w)[2], (*w)[0]};
+  }
+  // No area: each corner on its own, 0 where an edge has no length.
   const auto angle = [](const Vec3& u, const Vec3& v) {
     return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
   };
-  return {angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)};
+  return {angle(ab, c - a), angle(bc, a - b), angle(ca, b - c)};
 }
 
 }  // namespace meshtrace

@@ -2,8 +2,10 @@
 // cases, and the Mesh that holds them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "meshtrace/geometry/mesh.h"
 #include "meshtrace/geometry/triangle.h"
@@ -73,6 +75,64 @@ TEST(CornerAngles, SumToPiAndMatchARightTriangle) {
   EXPECT_NEAR(angles[0], std::numbers::pi / 2, kTol);
   EXPECT_NEAR(angles[1], std::numbers::pi / 4, kTol);
   EXPECT_NEAR(angles[2], std::numbers::pi / 4, kTol);
+}
+
+// The angle at corner `at` of (at, p, q) from the same formula carried out
+// in long double (64-bit significand): differences of nearby coordinates
+// are exact there, and the cross product keeps 11 more bits through the
+// cancellation of a thin corner.
+long double referenceAngle(const Vec3& at, const Vec3& p, const Vec3& q) {
+  using L = long double;
+  const L u[3] = {L(p.x) - at.x, L(p.y) - at.y, L(p.z) - at.z};
+  const L v[3] = {L(q.x) - at.x, L(q.y) - at.y, L(q.z) - at.z};
+  const L c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
+                    u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+}
+
+// A needle in a random direction: its tip's two long edges cross almost
+// parallel, where their own cross product cancels to ~1e-8 of its terms.
+// Each corner's angle must keep its relative accuracy: the tip's weight in
+// its vertex normal is that angle.
+TEST(CornerAngles, KeepTheirDigitsAtANeedlesTip) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  const auto randomVector = [&] { return Vec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  double worst = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 tip = randomVector(), b = randomVector();
+    const Vec3 c = b + 1e-8 * randomVector();
+    const Vec3 corners[3] = {tip, b, c};
+    const Vec3 angles = cornerAngles(tip, b, c);
+    for (int k = 0; k < 3; ++k) {
+      const long double expected =
+          referenceAngle(corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
+      worst = std::max(worst, static_cast<double>(std::fabs(angles[k] - expected) / expected));
+    }
+  }
+  EXPECT_LT(worst, 1e-8) << "largest relative error of a corner angle";
+}
+
+TEST(CornerAngles, SumToPiForAnyShape) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 a(coordinate(rng), coordinate(rng), coordinate(rng));
+    const Vec3 b(coordinate(rng), coordinate(rng), coordinate(rng));
+    const Vec3 c = i % 2 ? Vec3(coordinate(rng), coordinate(rng), coordinate(rng))
+                         : a + (b - a) * 0.5 + 1e-7 * Vec3(coordinate(rng), 0.0, 0.0);
+    const Vec3 angles = cornerAngles(a, b, c);
+    EXPECT_NEAR(angles[0] + angles[1] + angles[2], std::numbers::pi, 1e-14) << i;
+    for (int k = 0; k < 3; ++k) EXPECT_GE(angles[k], 0.0) << i;
+  }
+}
+
+TEST(CornerAngles, AreZeroWhereAnEdgeHasNoLength) {
+  EXPECT_EQ(cornerAngles(Vec3(4), Vec3(4), Vec3(4)), Vec3(0.0));
+  const Vec3 collinear = cornerAngles(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2));
+  EXPECT_EQ(collinear[0], 0.0);
+  EXPECT_NEAR(collinear[1], std::numbers::pi, 1e-15);
+  EXPECT_EQ(collinear[2], 0.0);
 }
 
 TEST(VertexNormals, CubeTriangleNormalsPointOutward) {
