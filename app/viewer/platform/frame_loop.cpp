@@ -7,7 +7,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <thread>
 
 #include "viewer/gl/gl_api.h"
 #include "viewer/gl/offscreen_context.h"
@@ -194,7 +193,7 @@ void logFrame(ViewerApp& app, const FrameMoments& m, bool presented, bool render
 }
 }  // namespace
 
-void runFrames(ViewerApp& app, const FrameHost& host) {
+void runFrames(ViewerApp& app, const FrameHost& host, WakeFlag& handedOver) {
   Clock::time_point lastInput = Clock::now() - std::chrono::seconds(1);
   FrameLogState log;
   // The log's times count from here; this line places that zero on the
@@ -206,7 +205,7 @@ void runFrames(ViewerApp& app, const FrameHost& host) {
   bool presented = true;
   while (host.keepRunning()) {
     if (presented && !app.display().imageWaiting())
-      std::this_thread::sleep_until(lastInput + kShortestFrame);
+      handedOver.waitUntil(lastInput + kShortestFrame);
     host.waitForInput(app.waitBeforeNextFrameMs(lastInput));
     FrameMoments m;
     lastInput = m.input = Clock::now();

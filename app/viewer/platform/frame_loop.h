@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "viewer/platform/wake_flag.h"
 #include "viewer/ui/viewer_app.h"
 
 namespace meshtrace::viewer {
@@ -39,7 +40,11 @@ struct FrameHost {
 // Runs frames until host.keepRunning() is false: waits as long as the app
 // allows (input, and the render reaching an image, end the wait), builds the
 // frame, draws and presents it unless the app says it is not worth it, and
-// reports its duration to the app.
-void runFrames(ViewerApp& app, const FrameHost& host);
+// reports its duration to the app. Frames come at most 60 a second: after
+// a frame, the loop pauses until 1/60 s from its start, unless `handedOver`
+// is raised (the app's wake-up raises it when background work hands
+// something over: a loaded scene, a preview, a render's first image), so
+// that a hand-over is met by a frame at once, not up to 16 ms later.
+void runFrames(ViewerApp& app, const FrameHost& host, WakeFlag& handedOver);
 
 }  // namespace meshtrace::viewer

@@ -3,9 +3,6 @@
 // every listed scene opened in turn and timed.
 #include <imgui.h>
 
-#include <condition_variable>
-#include <mutex>
-
 #include "viewer/gl/offscreen_context.h"
 #include "viewer/platform/frame_loop.h"
 #include "viewer/platform/run.h"
@@ -13,29 +10,6 @@
 namespace meshtrace::viewer {
 
 namespace {
-// Ends the loop's wait when the render reaches an image, as an empty event
-// ends a window's.
-class Waker {
- public:
-  void wake() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      pending_ = true;
-    }
-    woken_.notify_one();
-  }
-  void wait(double ms) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    woken_.wait_for(lock, std::chrono::duration<double, std::milli>(ms), [&] { return pending_; });
-    pending_ = false;
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable woken_;
-  bool pending_ = false;
-};
-
 // False if the scene did not open.
 bool printOpeningTimes(ViewerApp& app, const std::filesystem::path& scene) {
   const ViewerState& state = app.state();
@@ -85,8 +59,13 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
     io.DisplaySize = ImVec2(float(options.width), float(options.height));
     io.DeltaTime = 1.0f / 60.0f;
     warmUp(options.width, options.height);
-    Waker waker;
-    ViewerApp app(options, executable, [&] { waker.wake(); });
+    // The wake-up ends the pause between frames and the wait that stands
+    // for a window's wait for input, each with a flag of its own.
+    WakeFlag handedOver, inputWait;
+    ViewerApp app(options, executable, [&] {
+      handedOver.raise();
+      inputWait.raise();
+    });
     app.captureText(!options.describe.empty());
     auto start = std::chrono::steady_clock::now();
     int settled = 0;
@@ -106,7 +85,7 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
     };
     // No input arrives here: once idle, nothing is worth waiting for.
     host.waitForInput = [&](double ms) {
-      if (!app.idle()) waker.wait(ms);
+      if (!app.idle()) inputWait.waitFor(ms);
     };
     host.beginFrame = [&] { return std::make_pair(options.width, options.height); };
     host.present = [] {};
@@ -116,11 +95,11 @@ int runHeadless(const ViewerOptions& options, const std::filesystem::path& execu
           app.drop({scene.string()});
           start = std::chrono::steady_clock::now();
           settled = 0;
-          runFrames(app, host);
+          runFrames(app, host, handedOver);
           if (!printOpeningTimes(app, scene)) status = 1;
         }
     } else {
-      runFrames(app, host);
+      runFrames(app, host, handedOver);
       // A failure is an error and an exit code, never a picture of it: the
       // output (an earlier snapshot, say) stays as it was.
       const std::vector<std::string> failures = app.failures();

@@ -96,9 +96,14 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
     int width, height;
     glfwGetFramebufferSize(window, &width, &height);
     warmUp(width, height);
-    // The render reaching its first or exact image posts an empty event,
-    // which ends the wait for input.
-    ViewerApp app(options, executable, [] { glfwPostEmptyEvent(); });
+    // The render reaching its first or exact image, or background work
+    // handing something over, ends the pause between frames and posts an
+    // empty event, which ends the wait for input.
+    WakeFlag handedOver;
+    ViewerApp app(options, executable, [&handedOver] {
+      handedOver.raise();
+      glfwPostEmptyEvent();
+    });
     windowApp = &app;
     app.useSettings(settingsFile());
     glfwSetDropCallback(window, onDrop);
@@ -121,7 +126,7 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
       return std::make_pair(width, height);
     };
     host.present = [&] { glfwSwapBuffers(window); };
-    runFrames(app, host);
+    runFrames(app, host, handedOver);
     if (options.stats) app.printStats();
     windowApp = nullptr;
   }
