@@ -3,6 +3,8 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "viewer/model/face_label.h"
+
 namespace meshtrace::viewer {
 
 namespace {
@@ -39,14 +41,7 @@ void addSurface(Lines& lines, const SurfaceRecord& s, const Describe& describe) 
   lines.add("hit           " + describe(s.ref));
   const bool mesh = s.ref.kind == ObjectKind::Mesh;
   if (mesh) {
-    // A polygon's triangles are not the file's faces: name the face too,
-    // wherever the numbers part.
-    std::string triangle = printed("triangle      %u", s.ref.triangle);
-    if (s.face.corners > 3)
-      triangle += printed(" of face %u (%u corners)", s.face.face, s.face.corners);
-    else if (s.face.face != s.ref.triangle)
-      triangle += printed(" (face %u)", s.face.face);
-    lines.add(triangle);
+    lines.add(printed("triangle      %u", s.ref.triangle) + faceSuffix(s.ref.triangle, s.face));
   }
   lines.add(printed("t             %.6f", s.t));
   lines.vec("point", s.point);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "meshtrace/io/image.h"
+#include "viewer/model/face_label.h"
 
 namespace meshtrace::viewer {
 
@@ -13,6 +14,8 @@ PixelReadout readPixel(const PreparedScene& scene, const Camera& camera,
   r.x = x;
   r.y = y;
   r.probe = probePixel(scene.intersector(), camera, x, y);
+  if (r.probe.hit() && r.probe.kind == ObjectKind::Mesh)
+    r.face = scene.scene().meshes[r.probe.index].faceOf(r.probe.triangle);
   if (const std::uint8_t* rgba = frame.rgbaAt(x, flippedRow(y, frame.height)))
     r.color = std::array<int, 3>{rgba[0], rgba[1], rgba[2]};
   r.deviationDegrees = deviationAt(r.probe, scales);
@@ -38,7 +41,8 @@ std::vector<std::string> readoutFields(
     out.push_back(text);
     std::snprintf(text, sizeof text, "object %d: %s", p.object, describe(p).c_str());
     out.push_back(text);
-    if (p.kind == ObjectKind::Mesh) out.push_back("triangle " + std::to_string(p.triangle));
+    if (p.kind == ObjectKind::Mesh)
+      out.push_back("triangle " + std::to_string(p.triangle) + faceSuffix(p.triangle, r.face));
   } else {
     out.push_back("miss (background)");
   }

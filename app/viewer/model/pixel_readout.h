@@ -1,6 +1,6 @@
 #pragma once
 // What a pixel holds in every view, for the readout under the image: its
-// colour, and the primary ray's depth, normal, object and triangle, box
+// colour, and the primary ray's depth, normal, object, triangle and face, box
 // count, traversal cost and normal deviation, whichever view is shown.
 #include <cstdint>
 #include <functional>
@@ -17,6 +17,7 @@ struct PixelReadout {
   int x = 0, y = 0;                         // image pixel, y = 0 the bottom row
   std::optional<std::array<int, 3>> color;  // as rendered (8-bit), where the render has it
   PixelProbe probe;                         // the primary ray, as the probe views see it
+  FaceOfTriangle face;                      // of the mesh's file, for a mesh's triangle
   double deviationDegrees = -1.0;           // -1: not known (no cross-check, or not a mesh)
 };
 

@@ -12,6 +12,7 @@
 #include "viewer/model/inspector_report.h"
 #include "viewer/model/line_breaks.h"
 #include "viewer/model/pane_heights.h"
+#include "viewer/model/pixel_readout.h"
 
 namespace meshtrace::viewer {
 namespace {
@@ -121,21 +122,29 @@ TEST(PaneHeights, TheSceneListLeavesTheObjectsListItsRoomAndKeepsAShare) {
   EXPECT_EQ(sceneListHeight(0, 30, 100, 150), 30);
 }
 
-// A polygon's triangles are numbered apart from the file's faces: the
-// inspector names the face a hit triangle was cut from, so that the user
-// can find it in the file. Face 0 is a triangle out of view, face 1 an L
-// (four triangles), face 2 a triangle: triangle 5.
-TEST(InspectorReport, NamesTheFaceOfTheFileATriangleWasCutFrom) {
+// Face 0 is a triangle out of view, face 1 an L (four triangles), face 2 a
+// triangle: triangle 5. The middle row sees y = 1; a unit is 100 / (10 tan
+// 10 deg) = 56.7 pixels either side of x = 1.5 at column 150: column 93
+// sees x = 0.5, in the L's upright, column 195 x = 2.3, in the last
+// triangle.
+Scene sceneWithAnL() {
   const auto dir = test::scratchDir();
   test::writeFile(dir / "l.off",
                   "OFF\n11 3 0\n50 50 0\n51 50 0\n50 51 0\n"
                   "0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
                   "3 1 0\n2 2 0\n"
                   "3 0 1 2\n6 3 4 5 6 7 8\n3 4 9 10\n");
-  const Scene scene = loadScene(
+  return loadScene(
       test::writeFile(dir / "l.sce",
                       "camera 1.5 1 10  1.5 1 0  0 1 0  20  300 200\nlight 1 1 10  1 1 1\n"
                       "mesh l.off FLAT  0.1 0.1 0.1  0.5 0.5 0.5  0 0 0  1 0\n"));
+}
+
+// A polygon's triangles are numbered apart from the file's faces: the
+// inspector names the face a hit triangle was cut from, so that the user
+// can find it in the file.
+TEST(InspectorReport, NamesTheFaceOfTheFileATriangleWasCutFrom) {
+  const Scene scene = sceneWithAnL();
   const SceneIntersector intersector(scene, TraceOptions{});
   const auto triangleLine = [&](double x, double y) {
     const PixelInspection in = inspectPixel(intersector, Camera(scene.camera), x, y);
@@ -145,12 +154,25 @@ TEST(InspectorReport, NamesTheFaceOfTheFileATriangleWasCutFrom) {
       if (line.text.rfind("triangle", 0) == 0) return line.text;
     return std::string("no triangle line");
   };
-  // The middle row sees y = 1; a unit is 100 / (10 tan 10 deg) = 56.7
-  // pixels either side of x = 1.5 at column 150. x = 0.5 is in the L's
-  // upright, x = 2.3 in the last triangle.
   const std::string inL = triangleLine(93.0, 100.0);
   EXPECT_NE(inL.find("of face 1 (6 corners)"), std::string::npos) << inL;
   EXPECT_EQ(triangleLine(195.0, 100.0), "triangle      5 (face 2)");
+}
+
+// The readout under the image names the face as the inspector does.
+TEST(PixelReadout, NamesTheFaceOfTheFileATriangleWasCutFrom) {
+  const auto scene = std::make_shared<const Scene>(sceneWithAnL());
+  const PreparedScene prepared(scene, TraceOptions{});
+  const auto triangleField = [&](int x, int y) {
+    const PixelReadout r =
+        readPixel(prepared, Camera(scene->camera), ProgressiveFrame{}, x, y, FalseColorScales{});
+    for (const std::string& f : readoutFields(r, [](const PixelProbe&) { return "l"; }))
+      if (f.rfind("triangle", 0) == 0) return f;
+    return std::string("no triangle field");
+  };
+  const std::string inL = triangleField(93, 100);
+  EXPECT_NE(inL.find("of face 1 (6 corners)"), std::string::npos) << inL;
+  EXPECT_EQ(triangleField(195, 100), "triangle 5 (face 2)");
 }
 
 }  // namespace
