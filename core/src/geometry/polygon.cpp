@@ -43,6 +43,63 @@ double orient(const Point& a, const Point& b, const Point& c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+// The reflex corners of a polygon by where they lie: a uniform grid over
+// the corners' box, about one cell per reflex corner, so that an ear is
+// tested only against the reflex corners near it. A corner stays in its
+// cell when it stops being reflex (the caller skips it then).
+class ReflexGrid {
+ public:
+  void build(std::span<const Point> points, std::size_t reflexCount) {
+    Point hi = points[0];
+    lo_ = points[0];
+    for (const Point& p : points) {
+      lo_ = glm::min(lo_, p);
+      hi = glm::max(hi, p);
+    }
+    const Point size = hi - lo_;
+    const double cells = static_cast<double>(std::max<std::size_t>(reflexCount, 1));
+    // Square cells where the box allows; a box of no width or height is
+    // one cell across it.
+    const double side = std::sqrt(size.x * size.y / cells);
+    nx_ = side > 0.0 ? std::clamp(static_cast<int>(size.x / side), 1, kMaxCellsAcross) : 1;
+    ny_ = side > 0.0 ? std::clamp(static_cast<int>(size.y / side), 1, kMaxCellsAcross) : 1;
+    if (side == 0.0)
+      (size.x > size.y ? nx_ : ny_) = std::min(static_cast<int>(cells), kMaxCellsAcross);
+    scale_ = Point(size.x > 0.0 ? nx_ / size.x : 0.0, size.y > 0.0 ? ny_ / size.y : 0.0);
+    cells_.resize(static_cast<std::size_t>(nx_) * ny_);
+    for (std::vector<std::uint32_t>& cell : cells_) cell.clear();
+  }
+  void add(std::uint32_t corner, const Point& p) {
+    cells_[static_cast<std::size_t>(row(p.y)) * nx_ + column(p.x)].push_back(corner);
+  }
+  // Calls visit(corner) for each corner in the cells that the box
+  // [from, to] overlaps, until visit returns false; false then.
+  template <typename Visit>
+  bool forEachNear(const Point& from, const Point& to, Visit&& visit) const {
+    const int x0 = column(from.x), x1 = column(to.x), y0 = row(from.y), y1 = row(to.y);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        for (const std::uint32_t corner : cells_[static_cast<std::size_t>(y) * nx_ + x])
+          if (!visit(corner)) return false;
+    return true;
+  }
+
+ private:
+  static constexpr int kMaxCellsAcross = 1 << 12;
+  // Monotone in the coordinate, so a point inside a box falls in a cell
+  // the box's range covers; clamped before the conversion, which a value
+  // beyond int's range would make undefined.
+  static int cell(double offset, double scale, int cells) {
+    return static_cast<int>(std::clamp(std::floor(offset * scale), 0.0, cells - 1.0));
+  }
+  int column(double x) const { return cell(x - lo_.x, scale_.x, nx_); }
+  int row(double y) const { return cell(y - lo_.y, scale_.y, ny_); }
+
+  Point lo_, scale_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_;
+};
+
 // One polygon's work space, reused from polygon to polygon on a thread.
 struct PolygonScratch {
   std::vector<std::uint32_t> corners;              // vertex index of each corner, in order
@@ -52,6 +109,7 @@ struct PolygonScratch {
   std::vector<std::uint32_t> prev, next;     // the ring of corners left
   std::vector<char> reflex;                  // a corner left that turns <= zero
   std::vector<std::uint32_t> reflexCorners;  // every corner ever flagged reflex
+  ReflexGrid grid;                           // the same, by place, for many of them
   std::vector<TriangleIndices> clipped;
 };
 
@@ -136,8 +194,11 @@ bool tilesIt(const PolygonScratch& s, double zero) {
 // convex corner whose triangle with its two neighbours holds no other
 // corner (Meisters, 1975). It is cut off, and the rest clipped again. Only
 // reflex corners (or flat ones) can lie in such a triangle, so only those
-// are tested. Fills s.clipped, in the polygon's winding; false when no ear
-// is left (the polygon crosses itself) or the tests pass the allowance.
+// are tested, and with many of them only those near the ear (ReflexGrid).
+// A flat corner, on the line through its neighbours, is cut as a triangle
+// of no area when it is met, which leaves the same shape. Fills s.clipped,
+// in the polygon's winding; false when no ear is left (the polygon crosses
+// itself) or the tests pass the allowance.
 bool clipEars(PolygonScratch& s, double zero) {
   const auto n = static_cast<std::uint32_t>(s.points.size());
   const std::vector<Point>& p = s.points;
@@ -150,14 +211,25 @@ bool clipEars(PolygonScratch& s, double zero) {
     s.next[i] = (i + 1) % n;
   }
   const auto turn = [&](std::uint32_t i) { return orient(p[s.prev[i]], p[i], p[s.next[i]]); };
+  // Below this many reflex corners, an ear is tested against all of them.
+  constexpr std::size_t kGridFrom = 64;
+  bool gridded = false;
   // A corner's turn changes only when a neighbour is cut; a corner that
-  // turns by zero or less is tested against every ear.
+  // turns by zero or less is tested against every ear near it.
   const auto flag = [&](std::uint32_t i) {
     const bool reflex = turn(i) <= zero;
-    if (reflex && !s.reflex[i]) s.reflexCorners.push_back(i);
+    if (reflex && !s.reflex[i]) {
+      s.reflexCorners.push_back(i);
+      if (gridded) s.grid.add(i, p[i]);
+    }
     s.reflex[i] = reflex;
   };
   for (std::uint32_t i = 0; i < n; ++i) flag(i);
+  if (s.reflexCorners.size() >= kGridFrom) {
+    s.grid.build(p, s.reflexCorners.size());
+    for (const std::uint32_t q : s.reflexCorners) s.grid.add(q, p[q]);
+    gridded = true;
+  }
 
   const std::size_t allowed = kEarClipTestsPerCorner * n;
   std::size_t tests = 0;
@@ -166,18 +238,31 @@ bool clipEars(PolygonScratch& s, double zero) {
     if (s.reflex[b]) return false;
     const std::uint32_t a = s.prev[b], c = s.next[b];
     const Point &pa = p[a], &pb = p[b], &pc = p[c];
-    for (const std::uint32_t q : s.reflexCorners) {
-      if (!s.reflex[q] || q == a || q == c) continue;
+    // Whether reflex corner q leaves the ear free.
+    const auto outside = [&](std::uint32_t q) {
+      if (!s.reflex[q] || q == a || q == c) return true;
       ++tests;
       const Point& pq = p[q];
       // A corner at the same place as one of the ear's (a polygon whose
       // hole is joined to its outline by a cut passes a point twice) does
       // not block it.
-      if (pq == pa || pq == pb || pq == pc) continue;
-      if (orient(pa, pb, pq) >= -zero && orient(pb, pc, pq) >= -zero && orient(pc, pa, pq) >= -zero)
-        return false;
-    }
-    return true;
+      if (pq == pa || pq == pb || pq == pc) return true;
+      return !(orient(pa, pb, pq) >= -zero && orient(pb, pc, pq) >= -zero &&
+               orient(pc, pa, pq) >= -zero);
+    };
+    if (!gridded) return std::all_of(s.reflexCorners.begin(), s.reflexCorners.end(), outside);
+    // The points the test above counts as inside: barycentric coordinates
+    // of at least -e each, e = zero / orient(a, b, c) (under 1: b is
+    // convex), a triangle whose corners are a + e (2a - b - c) and so on.
+    // Its box, grown by a few units in the last place against rounding,
+    // holds every corner the test could find.
+    const double e = zero / orient(pa, pb, pc);
+    const Point ga = pa + e * ((pa - pb) + (pa - pc)), gb = pb + e * ((pb - pc) + (pb - pa)),
+                gc = pc + e * ((pc - pa) + (pc - pb));
+    const Point lo = glm::min(glm::min(ga, gb), gc), hi = glm::max(glm::max(ga, gb), gc);
+    const Point slack =
+        8.0 * std::numeric_limits<double>::epsilon() * (glm::abs(lo) + glm::abs(hi) + (hi - lo));
+    return s.grid.forEachNear(lo - slack, hi + slack, outside);
   };
   std::uint32_t left = n;
   const auto cut = [&](std::uint32_t b) {
@@ -191,28 +276,25 @@ bool clipEars(PolygonScratch& s, double zero) {
     flag(c);
     return c;
   };
+  const auto flat = [&](std::uint32_t i) { return std::abs(turn(i)) <= zero; };
 
   s.clipped.clear();
   std::uint32_t at = 0, misses = 0;  // corners looked at since the last cut
   while (left > 3) {
     if (tests > allowed) return false;
-    if (isEar(at)) {
+    if (flat(at) || isEar(at)) {
       at = cut(at);
+      // A corner the cut left flat goes next, so that a row of them (a
+      // comb's valleys once its teeth are cut) is cut into triangles of no
+      // area, not into a fan of slivers from a corner beside the row.
+      if (flat(s.prev[at])) at = s.prev[at];
       misses = 0;
       continue;
     }
     at = s.next[at];
-    if (++misses < left) continue;
-    // No ear: every corner left is reflex or holds another in its
-    // triangle. A flat corner (on the line through its neighbours) is cut
-    // as a triangle of no area, which leaves the same shape; with none,
-    // the polygon crosses itself.
-    std::uint32_t flat = at;
-    for (std::uint32_t k = 0; k < left && std::abs(turn(flat)) > zero; ++k) flat = s.next[flat];
-    tests += left;
-    if (std::abs(turn(flat)) > zero) return false;
-    at = cut(flat);
-    misses = 0;
+    // No ear and no flat corner: every corner left is reflex or holds
+    // another in its triangle, so the polygon crosses itself.
+    if (++misses >= left) return false;
   }
   if (turn(at) < -zero) return false;
   s.clipped.push_back({s.corners[s.prev[at]], s.corners[at], s.corners[s.next[at]]});

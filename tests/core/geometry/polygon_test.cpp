@@ -306,10 +306,27 @@ TEST(PolygonTriangles, APentagramIsCountedAndKept) {
   EXPECT_EQ(r.after, r.before);
 }
 
-// A comb of 10,000 teeth has 10,000 reflex corners: clipping it would test
-// each ear against all of them, 10^8 tests. It is given up after the
-// allowance, kept and counted, instead of holding the load for seconds.
-TEST(PolygonTriangles, AFaceTooIntricateToClipIsCountedAndKept) {
+// Stars of hundreds to thousands of corners, about half of them reflex:
+// enough that an ear is tested only against the reflex corners near it
+// (the grid of clipEars), which must find every one that blocks it.
+TEST(PolygonTriangles, PolygonsWithManyReflexCornersAreTiled) {
+  std::mt19937 random(8);
+  for (std::size_t n : {150, 400, 1000, 3000}) {
+    SCOPED_TRACE(n);
+    const PlacedPolygon polygon =
+        place(randomStar(n, random), 0.1 * static_cast<double>(n), 3.0, Vec3(-2e5, 7e5, 1e4));
+    const Retiled r = retile(polygon);
+    EXPECT_FALSE(tiles(polygon.outline, r.before));
+    EXPECT_EQ(r.tiling.recut, 1u);
+    EXPECT_TRUE(tiles(polygon.outline, r.after));
+  }
+}
+
+// A comb of 10,000 teeth has 10,000 reflex corners (its valleys): tested
+// against all of them, its ears would take 10^8 tests, past the allowance.
+// Each ear is near a few of them, and its flat corners (the valleys once
+// the teeth are cut) go as they are met, so it is clipped.
+TEST(PolygonTriangles, ACombOf10000TeethIsTiled) {
   const int teeth = 10000;
   // Teeth point up from a base, the valleys between them reflex; the
   // outline runs counter-clockwise.
@@ -322,6 +339,28 @@ TEST(PolygonTriangles, AFaceTooIntricateToClipIsCountedAndKept) {
   // Starting at a tip, the first ears span the valleys: they turn
   // backwards, so the comb must be clipped.
   std::rotate(outline.begin(), outline.begin() + 3, outline.end());
+  const PlacedPolygon polygon = place(outline, 0.0, 1.0, Vec3(0.0));
+  const Retiled r = retile(polygon);
+  EXPECT_FALSE(tiles(outline, r.before));
+  EXPECT_EQ(r.tiling.recut, 1u);
+  EXPECT_TRUE(tiles(outline, r.after));
+}
+
+// A sunburst of 10,000 rays has its 10,000 reflex corners on a small circle
+// at its centre, in the box of every ear: near all of them, each ear is
+// tested against them all. It is given up after the allowance, kept and
+// counted, instead of holding the load for seconds.
+TEST(PolygonTriangles, AFaceTooIntricateToClipIsCountedAndKept) {
+  const int rays = 10000;
+  std::vector<glm::dvec2> outline;
+  for (int i = 0; i < rays; ++i) {
+    const double a = 2.0 * M_PI * i / rays, b = 2.0 * M_PI * (i + 0.5) / rays;
+    outline.emplace_back(0.01 * std::cos(a), 0.01 * std::sin(a));
+    outline.emplace_back(std::cos(b), std::sin(b));
+  }
+  // Starting at a tip, the first ears span the reflex corners between
+  // the rays and turn backwards.
+  std::rotate(outline.begin(), outline.begin() + 1, outline.end());
   const PlacedPolygon polygon = place(outline, 0.0, 1.0, Vec3(0.0));
   const Retiled r = retile(polygon);
   EXPECT_FALSE(tiles(outline, r.before));

@@ -53,9 +53,12 @@ PolygonTiling tileNonConvexPolygons(std::span<const Vec3> vertices,
                                     std::span<TriangleIndices> triangles);
 
 // The most point-in-triangle tests ear clipping may spend on a polygon, per
-// corner: a clip tests each ear against the reflex corners left, so this
-// clips polygons of up to about this many reflex corners and bounds the
-// time any file's polygons can take.
+// corner: a clip tests each ear against the reflex corners left near it
+// (in a grid of them, for polygons of many), so this clips any polygon
+// whose ears lie near up to about this many reflex corners, a comb of
+// 10,000 teeth among them, and bounds the time any file's polygons can
+// take (a sunburst of 10,000 rays, its reflex corners all at its centre,
+// is given up).
 inline constexpr std::size_t kEarClipTestsPerCorner = 256;
 
 }  // namespace meshtrace
