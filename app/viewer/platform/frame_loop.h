@@ -44,7 +44,8 @@ struct FrameHost {
 // a frame, the loop pauses until 1/60 s from its start, unless `handedOver`
 // is raised (the app's wake-up raises it when background work hands
 // something over: a loaded scene, a preview, a render's first image), so
-// that a hand-over is met by a frame at once, not up to 16 ms later.
+// that a hand-over is met by a frame at once rather than after the rest
+// of the pause.
 void runFrames(ViewerApp& app, const FrameHost& host, WakeFlag& handedOver);
 
 }  // namespace meshtrace::viewer
