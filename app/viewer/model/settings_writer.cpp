@@ -5,27 +5,15 @@
 
 namespace meshtrace::viewer {
 
-SettingsWriter::~SettingsWriter() {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    stopping_ = true;
-  }
-  changed_.notify_all();
-  if (thread_.joinable()) thread_.join();
-}
-
 void SettingsWriter::save(const ViewerSettings& settings, const std::filesystem::path& file) {
+  bool writeQueued;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    writeQueued = pending_.has_value();
     pending_ = Request{settings, file};
-    if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
   }
-  changed_.notify_all();
-}
-
-void SettingsWriter::flush() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return !pending_ && !writing_; });
+  // A write already queued takes this request in place of the one before.
+  if (!writeQueued) worker_.post([this] { writePending(); });
 }
 
 std::string SettingsWriter::takeError() {
@@ -33,28 +21,22 @@ std::string SettingsWriter::takeError() {
   return std::exchange(error_, std::string());
 }
 
-void SettingsWriter::run() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  for (;;) {
-    changed_.wait(lock, [&] { return pending_ || stopping_; });
-    // What is waiting is written even when stopping: the last settings of
-    // a closing window are kept.
-    if (!pending_) return;
-    Request request = std::move(*pending_);
+void SettingsWriter::writePending() {
+  Request request;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    request = std::move(*pending_);
     pending_.reset();
-    writing_ = true;
-    lock.unlock();
-    std::string error;
-    try {
-      saveSettings(request.settings, request.file);
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    lock.lock();
-    writing_ = false;
-    if (!error.empty()) error_ = std::move(error);
-    changed_.notify_all();
   }
+  std::string error;
+  try {
+    saveSettings(request.settings, request.file);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (error.empty()) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  error_ = std::move(error);
 }
 
 }  // namespace meshtrace::viewer

@@ -6,27 +6,21 @@
 // a panel is resized. Writes happen in the order asked, a newer request
 // replacing one still waiting; what is waiting when the writer is
 // destroyed is written before it goes.
-#include <condition_variable>
 #include <filesystem>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "viewer/model/serial_worker.h"
 #include "viewer/model/settings.h"
 
 namespace meshtrace::viewer {
 
 class SettingsWriter {
  public:
-  SettingsWriter() = default;
-  ~SettingsWriter();
-  SettingsWriter(const SettingsWriter&) = delete;
-  SettingsWriter& operator=(const SettingsWriter&) = delete;
-
   void save(const ViewerSettings& settings, const std::filesystem::path& file);
   // Waits until every request so far is written.
-  void flush();
+  void flush() { worker_.flush(); }
   // Why the last write that failed did, once; else empty.
   std::string takeError();
 
@@ -35,15 +29,12 @@ class SettingsWriter {
     ViewerSettings settings;
     std::filesystem::path file;
   };
-  void run();
+  void writePending();
 
   std::mutex mutex_;
-  std::condition_variable changed_;
-  std::optional<Request> pending_;
-  bool writing_ = false;
-  bool stopping_ = false;
+  std::optional<Request> pending_;  // the newest request not yet taken by a write
   std::string error_;
-  std::thread thread_;  // started with the first request
+  SerialWorker worker_;  // last: it goes first, writing what is pending
 };
 
 }  // namespace meshtrace::viewer
