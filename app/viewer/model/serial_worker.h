@@ -1,9 +1,10 @@
 #pragma once
 // Runs tasks one after another, in the order they were posted, on a thread
 // of its own (started with the first task) below the UI thread's
-// priority: work a frame must not wait for and whose end nobody waits on,
-// such as letting go of a large scene or writing the settings file. What
-// is still queued when the worker is destroyed runs before it goes.
+// priority: work a frame must not wait for, such as letting go of a large
+// scene or writing the settings file (flush() waits for it where a caller
+// must). What is still queued when the worker is destroyed runs before it
+// goes.
 #include <condition_variable>
 #include <deque>
 #include <functional>
