@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "meshtrace/util/enum_names.h"
+#include "util/atan2_pair.h"
 
 namespace meshtrace {
 
@@ -220,8 +221,7 @@ namespace {
 std::optional<Vec3> anglesWidestFirst(const Vec3& pq, const Vec3& qr, const Vec3& rp) {
   const double twiceArea = glm::length(glm::cross(pq, rp));
   if (!(twiceArea > 0.0) || !std::isfinite(twiceArea)) return std::nullopt;
-  const double q = std::atan2(twiceArea, -glm::dot(pq, qr));
-  const double r = std::atan2(twiceArea, -glm::dot(qr, rp));
+  const auto [q, r] = atan2Pair(twiceArea, -glm::dot(pq, qr), -glm::dot(qr, rp));
   return Vec3(std::numbers::pi - q - r, q, r);
 }
 
