@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/parallel_reduce.h>
 
@@ -81,18 +82,14 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
   return contributes;
 }
 
-}  // namespace
-
-std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
-                                             const std::vector<Vec3>& triangleNormals) {
-  std::vector<Vec3> normals;
-  reserveOnLargePages(normals, mesh.vertices.size());
-  normals.assign(mesh.vertices.size(), Vec3(0.0));
-  const std::vector<char> contributes = contributingTriangles(mesh, triangleNormals);
-  // The corner angles (three atan2 a triangle, most of the work) are taken
-  // in parallel, a chunk of triangles at a time, while the chunks before
-  // are summed into the normals in triangle order: the sums, and so the
-  // normals, do not depend on the thread count.
+// Adds each triangle's angle-weighted normal to its corners' sums, in
+// triangle order, for the triangles `counts` accepts. The corner angles
+// (two atan2 a triangle, most of the work) are taken in parallel, a chunk
+// of triangles at a time, while the chunks before are summed in order: the
+// sums, and so the normals, do not depend on the thread count.
+template <typename Counts>
+void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& triangleNormals,
+                             const Counts& counts, std::vector<Vec3>& sums) {
   struct Chunk {
     std::size_t begin = 0, end = 0;
     std::vector<Vec3> angles;
@@ -119,7 +116,7 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
               [&](std::shared_ptr<Chunk> c) {
                 c->angles.resize(c->end - c->begin);
                 for (std::size_t i = c->begin; i < c->end; ++i) {
-                  if (!contributes[i]) continue;
+                  if (!counts(i)) continue;
                   const TriangleIndices& t = mesh.triangles[i];
                   c->angles[i - c->begin] =
                       cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
@@ -129,12 +126,48 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
           tbb::make_filter<std::shared_ptr<Chunk>, void>(
               tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Chunk>& c) {
                 for (std::size_t i = c->begin; i < c->end; ++i) {
-                  if (!contributes[i]) continue;
+                  if (!counts(i)) continue;
                   const TriangleIndices& t = mesh.triangles[i];
                   const Vec3& w = c->angles[i - c->begin];
-                  for (int k = 0; k < 3; ++k) normals[t[k]] += w[k] * triangleNormals[i];
+                  for (int k = 0; k < 3; ++k) sums[t[k]] += w[k] * triangleNormals[i];
                 }
               }));
+}
+
+}  // namespace
+
+std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
+                                             const std::vector<Vec3>& triangleNormals) {
+  std::vector<Vec3> normals;
+  reserveOnLargePages(normals, mesh.vertices.size());
+  normals.assign(mesh.vertices.size(), Vec3(0.0));
+  // Which triangles count is known only after a sort, while their angles
+  // need nothing but the triangle. So the sums first take every triangle
+  // with area while contributingTriangles runs beside them; a triangle
+  // listed again (rare) then has its corners' sums made again from those
+  // that count, in the same order, so each sum is the one it would have
+  // been had only those been added.
+  std::vector<char> contributes;
+  const auto hasArea = [&](std::size_t i) { return triangleNormals[i] != Vec3(0.0); };
+  tbb::parallel_invoke([&] { contributes = contributingTriangles(mesh, triangleNormals); },
+                       [&] { sumAngleWeightedNormals(mesh, triangleNormals, hasArea, normals); });
+  std::vector<char> redo;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    if (contributes[i] || !hasArea(i)) continue;
+    if (redo.empty()) redo.assign(normals.size(), 0);
+    for (const std::uint32_t v : mesh.triangles[i]) redo[v] = 1;
+  }
+  if (!redo.empty()) {
+    for (std::size_t v = 0; v < normals.size(); ++v)
+      if (redo[v]) normals[v] = Vec3(0.0);
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const TriangleIndices& t = mesh.triangles[i];
+      if (!contributes[i] || !(redo[t[0]] || redo[t[1]] || redo[t[2]])) continue;
+      const Vec3 w = cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+      for (int k = 0; k < 3; ++k)
+        if (redo[t[k]]) normals[t[k]] += w[k] * triangleNormals[i];
+    }
+  }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t v = r.begin(); v < r.end(); ++v) {

@@ -203,11 +203,11 @@ TEST(VertexNormals, ATriangleListedTwiceCountsOnce) {
   for (std::size_t v = 0; v < normals.size(); ++v) EXPECT_EQ(normals[v], expected[v]) << v;
 }
 
-// The corner angles are taken in parallel, in chunks: a mesh larger than a
-// chunk must get the normals of the one-triangle-at-a-time sum, bit for bit.
-TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
+// A 200 x 200 grid of vertices on a wave, 79,202 triangles: several of the
+// chunks the corner angles are taken in.
+MeshData wavyGrid() {
   MeshData grid;
-  constexpr std::uint32_t kSide = 200;  // 79,202 triangles
+  constexpr std::uint32_t kSide = 200;
   for (std::uint32_t y = 0; y < kSide; ++y)
     for (std::uint32_t x = 0; x < kSide; ++x)
       grid.vertices.push_back(Vec3(x, y, std::sin(0.3 * x) * std::cos(0.2 * y)));
@@ -217,6 +217,13 @@ TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
       grid.triangles.push_back({v, v + 1, v + kSide + 1});
       grid.triangles.push_back({v, v + kSide + 1, v + kSide});
     }
+  return grid;
+}
+
+// The corner angles are taken in parallel, in chunks: a mesh larger than a
+// chunk must get the normals of the one-triangle-at-a-time sum, bit for bit.
+TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
+  const MeshData grid = wavyGrid();
   const std::vector<Vec3> triangleNormals = triangleNormalsOf(grid);
   std::vector<Vec3> serial(grid.vertices.size(), Vec3(0.0));
   for (std::size_t i = 0; i < grid.triangles.size(); ++i) {
@@ -227,6 +234,25 @@ TEST(VertexNormals, ALargeMeshGetsTheSameNormalsAsTheSerialSum) {
   const std::vector<Vec3> normals = angleWeightedVertexNormals(grid, triangleNormals);
   for (std::size_t v = 0; v < normals.size(); ++v)
     ASSERT_EQ(normals[v], serial[v] / glm::length(serial[v])) << v;
+}
+
+// The sums take every triangle first and remake those of a repeat's
+// corners: across many chunks, the normals must still be those of the mesh
+// without the repeats, bit for bit.
+TEST(VertexNormals, ALargeMeshWithRepeatsGetsTheNormalsOfTheMeshWithout) {
+  const MeshData once = wavyGrid();
+  MeshData repeated;
+  repeated.vertices = once.vertices;
+  for (std::size_t i = 0; i < once.triangles.size(); ++i) {
+    const TriangleIndices& t = once.triangles[i];
+    repeated.triangles.push_back(t);
+    if (i % 997 == 0) repeated.triangles.push_back({t[2], t[1], t[0]});  // reversed, next
+  }
+  for (std::size_t i = 500; i < once.triangles.size(); i += 1009)
+    repeated.triangles.push_back(once.triangles[i]);  // again, at the end
+  const std::vector<Vec3> expected = vertexNormalsOf(once);
+  const std::vector<Vec3> normals = vertexNormalsOf(repeated);
+  for (std::size_t v = 0; v < normals.size(); ++v) ASSERT_EQ(normals[v], expected[v]) << v;
 }
 
 TEST(VertexNormals, WeighEachTriangleByItsAngleAtTheVertex) {
