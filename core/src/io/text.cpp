@@ -48,6 +48,11 @@ bool hasLoneCr(std::string_view text) {
   }
 }
 
+LineReader::LineReader(std::string_view text, bool loneCr)
+    : text_(text),
+      loneCr_(loneCr),
+      comments_(std::memchr(text.data(), '#', text.size()) != nullptr) {}
+
 bool LineReader::nextNonEmpty(std::string_view& line) {
   while (pos_ < text_.size()) {
     const char* begin = text_.data() + pos_;
@@ -64,8 +69,10 @@ bool LineReader::nextNonEmpty(std::string_view& line) {
     std::string_view raw(begin, length);
     pos_ += next;
     ++line_;
-    const std::size_t hash = raw.find('#');
-    if (hash != std::string_view::npos) raw = raw.substr(0, hash);
+    if (comments_) {
+      const std::size_t hash = raw.find('#');
+      if (hash != std::string_view::npos) raw = raw.substr(0, hash);
+    }
     for (char c : raw) {
       if (!isSpace(c)) {
         line = raw;
@@ -105,10 +112,16 @@ NumberToken TokenReader::nextInt64(std::int64_t& out, std::string_view& token) {
   const char* last = start + std::min<std::ptrdiff_t>(18, end - start);
   const char* p = start;
   std::int64_t value = 0;
-  for (; p < last; ++p) {
+  // Two digits a step: the chain of dependent multiply-adds, which bounds
+  // the speed here, is half as long.
+  for (; last - p >= 2; p += 2) {
+    const auto high = static_cast<unsigned>(p[0] - '0'), low = static_cast<unsigned>(p[1] - '0');
+    if (high > 9 || low > 9) break;
+    value = value * 100 + static_cast<std::int64_t>(high * 10 + low);
+  }
+  if (p < last) {
     const auto digit = static_cast<unsigned>(*p - '0');
-    if (digit > 9) break;
-    value = value * 10 + static_cast<std::int64_t>(digit);
+    if (digit <= 9) value = value * 10 + static_cast<std::int64_t>(digit), ++p;
   }
   if (p > start && (p == end || isSpace(*p))) {
     token = std::string_view(start, static_cast<std::size_t>(p - start));

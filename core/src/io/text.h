@@ -40,7 +40,7 @@ class LineReader {
  public:
   explicit LineReader(std::string_view text) : LineReader(text, hasLoneCr(text)) {}
   // With hasLoneCr(text) known: lines are looked at for a CR only if true.
-  LineReader(std::string_view text, bool loneCr) : text_(text), loneCr_(loneCr) {}
+  LineReader(std::string_view text, bool loneCr);
   // The next line that has any token; false at the end of the text.
   bool nextNonEmpty(std::string_view& line);
   std::size_t lineNumber() const { return line_; }
@@ -50,6 +50,7 @@ class LineReader {
  private:
   std::string_view text_;
   bool loneCr_;
+  bool comments_;  // whether the text has a '#' at all: lines are searched for one only if so
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
 };

@@ -15,7 +15,8 @@ namespace meshtrace {
 namespace {
 
 // Tokens at and around every edge of the fast paths: digits only, up to
-// and past 18 digits and int64's range; signs; numbers run into other
+// and past 18 digits and int64's range, odd and even counts of digits
+// (read two at a time) before a stray character; signs; numbers run into other
 // characters; the forms from_chars takes for doubles (exponents, inf,
 // nan) and ones it stops inside.
 const std::vector<std::string> kTokens = {"0",
@@ -35,6 +36,10 @@ const std::vector<std::string> kTokens = {"0",
                                           "+",
                                           "-",
                                           "12x",
+                                          "1x",
+                                          "123x",
+                                          "1234x5",
+                                          "12345678901234567",
                                           "x12",
                                           "1.",
                                           ".5",
