@@ -287,7 +287,13 @@ bool clipEars(PolygonScratch& s, double zero) {
       // A corner the cut left flat goes next, so that a row of them (a
       // comb's valleys once its teeth are cut) is cut into triangles of no
       // area, not into a fan of slivers from a corner beside the row.
-      if (flat(s.prev[at])) at = s.prev[at];
+      // Otherwise the corner after the cut's is tried next, not the
+      // cut's: an ear there would share the cut's first corner, and a run
+      // of such ears (along a row of many corners) makes a fan whose long
+      // slivers' boxes all hold the points near its apex. Skipping one
+      // cuts a run in rounds of every other corner, as
+      // appendPolygonTriangles does, and the slivers stay short.
+      at = flat(s.prev[at]) ? s.prev[at] : s.next[at];
       misses = 0;
       continue;
     }

@@ -12,8 +12,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <numeric>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "meshtrace/accel/intersector.h"
@@ -172,6 +174,40 @@ TEST(SceneBvh, AFaceOfAHundredThousandCornersCostsFewTestsARay) {
       static_cast<double>(q.counters.triangleTests) / static_cast<double>(q.queries);
   EXPECT_LE(testsAQuery, 3.0 * std::log2(static_cast<double>(kCorners)));
   std::printf("%.2f triangle tests a query\n", testsAQuery);
+}
+
+// An L-shaped face whose bottom edge is a row of 10,000 corners, on a line
+// and on a slight outward arc, cut by ear clipping as the readers cut it:
+// a query costs a few triangle tests, where the ears cut in a run from the
+// L's top-left corner made a fan whose slivers' boxes all held the points
+// near it (about 3,000 tests a query).
+TEST(SceneBvh, ANonConvexFaceWithARowOfManyCornersCostsFewTestsARay) {
+  constexpr std::uint32_t kRow = 10000;
+  for (const double bulge : {0.0, 0.05}) {
+    MeshData l;
+    l.vertices.emplace_back(-1.0, -1.0, 0.0);
+    for (std::uint32_t i = 1; i <= kRow; ++i) {
+      const double s = static_cast<double>(i) / (kRow + 1);
+      l.vertices.emplace_back(-1.0 + 2.0 * s, -1.0 - bulge * std::sin(M_PI * s), 0.0);
+    }
+    for (const auto& [x, y] :
+         {std::pair{1.0, -1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 1.0}, {-1.0, 1.0}})
+      l.vertices.emplace_back(x, y, 0.0);
+    std::vector<std::uint32_t> corners(l.vertices.size());
+    std::iota(corners.begin(), corners.end(), 0u);
+    appendPolygonTriangles(corners, l.triangles, &l.polygons);
+    const PolygonTiling tiling = tileNonConvexPolygons(l.vertices, l.polygons, l.triangles);
+    ASSERT_EQ(tiling.recut, 1u) << "bulge " << bulge;
+    Scene scene;
+    scene.meshes.push_back(makeMesh("l.off", std::move(l)));
+    const SceneIntersector intersector(scene, {});
+    const DownwardQueries q = queryDownOntoTheUnitSquare(intersector);
+    EXPECT_GT(q.hits, q.queries / 2) << "bulge " << bulge;  // the L covers 52% of the square
+    const double testsAQuery =
+        static_cast<double>(q.counters.triangleTests) / static_cast<double>(q.queries);
+    EXPECT_LE(testsAQuery, 3.0 * std::log2(static_cast<double>(kRow))) << "bulge " << bulge;
+    std::printf("bulge %g: %.2f triangle tests a query\n", bulge, testsAQuery);
+  }
 }
 
 }  // namespace
