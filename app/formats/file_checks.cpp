@@ -16,7 +16,6 @@ namespace meshtrace::formats {
 namespace {
 // No list in a mesh file needs more items than a file of 4 GiB has bytes.
 constexpr std::int64_t kMaxListLength = std::int64_t{1} << 32;
-constexpr std::uintmax_t kMaxMaterialBytes = std::uintmax_t{16} << 20;
 
 // Whitespace-separated tokens, with the line each is on.
 class Tokens {
@@ -249,58 +248,6 @@ ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes
     if (bytes.size() == 84 + 50 * triangles) return {0, triangles};  // binary, whole
   }
   return {0, checkAsciiStl(file, bytes)};
-}
-
-ElementCounts checkObj(const std::filesystem::path& file, std::string_view bytes) {
-  std::int64_t vertices = 0;
-  std::size_t line = 0, faces = 0;
-  for (std::size_t pos = 0; pos < bytes.size();) {
-    std::size_t eol = bytes.find('\n', pos);
-    if (eol == std::string_view::npos) eol = bytes.size();
-    const std::string_view text = bytes.substr(pos, eol - pos);
-    pos = eol + 1;
-    ++line;
-    if (text.find('\0') != std::string_view::npos)
-      throw InputError::atLine(file, line, "binary data (a NUL byte): not a text file");
-    Tokens words(text);
-    std::string_view keyword, w;
-    if (!words.next(keyword)) continue;
-    if (keyword == "v") {
-      for (int k = 0; k < 3; ++k)
-        if (!words.next(w) || !isNumber(w))
-          throw InputError::atLine(file, line, "a vertex needs three numbers");
-      ++vertices;
-    } else if (keyword == "f") {
-      int corners = 0;
-      while (words.next(w)) {
-        std::int64_t index = 0;
-        const std::string_view number = w.substr(0, w.find('/'));
-        if (!isInteger(number, index) || index == 0 || index > vertices || -index > vertices)
-          throw InputError::atLine(file, line,
-                                   "face " + std::to_string(faces) + ": corner " + quoted(w) +
-                                       " names none of the " + std::to_string(vertices) +
-                                       " vertices defined above it");
-        ++corners;
-      }
-      if (corners < 3)
-        throw InputError::atLine(file, line,
-                                 "face " + std::to_string(faces) + " has " +
-                                     std::to_string(corners) + " corners; at least 3 are needed");
-      ++faces;
-    } else if (keyword == "mtllib") {
-      while (words.next(w)) {
-        const auto library = file.parent_path() / std::string(w);
-        std::error_code ec;
-        if (std::filesystem::exists(library, ec) &&
-            (!std::filesystem::is_regular_file(library, ec) ||
-             std::filesystem::file_size(library, ec) > kMaxMaterialBytes))
-          throw InputError::atLine(
-              file, line,
-              "material library " + quoted(w) + " is not a regular file of at most 16 MB");
-      }
-    }
-  }
-  return {static_cast<std::uint64_t>(vertices), faces};
 }
 
 [[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes) {

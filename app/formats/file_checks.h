@@ -1,9 +1,9 @@
 #pragma once
 // Checks of a mesh file before OpenMesh's readers see it. Those readers
 // trust what a file says: a PLY header without end_header or a face list
-// of 2^31 corners keeps them reading forever, a truncated ASCII STL or an
-// OBJ face naming a vertex that does not exist loads as a smaller mesh
-// without a word, counts in headers go to reserve() unchecked. Each check
+// of 2^31 corners keeps them reading forever, a truncated ASCII STL loads
+// as a smaller mesh without a word, counts in headers go to reserve()
+// unchecked. Each check
 // walks the file's structure (no values are kept, nothing is allocated per
 // element) and throws InputError naming the file, the line or the element,
 // and what is wrong.
@@ -29,10 +29,6 @@ ElementCounts checkPly(const std::filesystem::path& file, std::string_view bytes
 // OpenMesh decides), else ASCII: solid, then facets of exactly three
 // vertices of three numbers each, then endsolid.
 ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes);
-// Vertex lines of three numbers or more, faces of three corners or more,
-// each naming a vertex defined above it (counted from 1, or back from the
-// last with a negative index); a material library must be a regular file.
-ElementCounts checkObj(const std::filesystem::path& file, std::string_view bytes);
 // The header's counts against the file's size; then refused (README).
 [[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes);
 

@@ -256,7 +256,6 @@ std::pair<std::uint64_t, formats::ElementCounts> checkBeforeReading(
   formats::ElementCounts counts;
   if (extension == ".ply") counts = checkPly(file, mapped.bytes());
   if (extension == ".stl") counts = checkStl(file, mapped.bytes());
-  if (extension == ".obj") counts = checkObj(file, mapped.bytes());
   if (extension == ".om") checkOm(file, mapped.bytes());
   return {mapped.bytes().size(), counts};
 }
@@ -305,8 +304,7 @@ void silenceOpenMesh() {
 void registerOpenMeshFormats() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const char* extension : {".obj", ".stl", ".om"})
-      registerMeshReader(extension, readOpenMeshFile);
+    for (const char* extension : {".stl", ".om"}) registerMeshReader(extension, readOpenMeshFile);
     // Binary PLY is read by the core's reader, streamed (and quicker than
     // OpenMesh's generic properties); what it leaves, ASCII PLY above all,
     // comes here.

@@ -1,6 +1,7 @@
 #pragma once
-// PLY (ASCII and binary), OBJ, STL (ASCII and binary) and OM meshes through
-// OpenMesh's readers. A library of its own, so that the core never depends
+// ASCII PLY (and the binary PLY the core's reader leaves), STL (ASCII and
+// binary) and OM meshes through OpenMesh's readers; OBJ, OFF and binary
+// PLY have readers of their own in the core. A library of its own, so that the core never depends
 // on OpenMesh: the tools link it and register its readers at start.
 #include <filesystem>
 
@@ -9,13 +10,14 @@
 
 namespace meshtrace::formats {
 
-// Registers readOpenMeshFile for .obj, .stl and .om, and for .ply the
+// Registers readOpenMeshFile for .stl and .om, and for .ply the
 // core's binary PLY reader (readBinaryPly), with readOpenMeshFile for the
 // PLY files it leaves (registerMeshReader); only the first call does, so
 // every loader may call it first.
 void registerOpenMeshFormats();
 
-// Reads a mesh with the OpenMesh reader of its extension, polygons
+// Reads a mesh with the OpenMesh reader of its extension (.ply, .stl or
+// .om, each checked first, file_checks.h; an .obj goes unchecked), polygons
 // triangulated as OFF's are (polygon.h). Only the faces' corners are taken: no
 // topology is built, so a non-manifold mesh keeps every face. STL lists
 // each triangle's corners apart; its reader merges equal points, so the

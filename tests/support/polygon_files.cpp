@@ -64,6 +64,34 @@ std::string offText(const PolygonMesh& mesh) {
   return out;
 }
 
+std::string objText(const PolygonMesh& mesh) {
+  std::string out = "# polygons\nvt 0 0\nvn 0 0 1\n";
+  const auto number = [&](auto value, const char* after) {
+    out += std::to_string(value);
+    out += after;
+  };
+  for (const Vec3& v : mesh.vertices) {
+    out += "v ";
+    number(v.x, " "), number(v.y, " "), number(v.z, "\n");
+  }
+  const auto vertices = static_cast<std::int64_t>(mesh.vertices.size());
+  // The corner forms in turn: plain, with a texture index, with a normal
+  // index, with both, and counted back from the last vertex.
+  static const char* const kAfter[] = {"", "/1", "//1", "/1/1", ""};
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    out += "f";
+    const std::size_t form = f % 5;
+    for (const std::uint32_t corner : mesh.faces[f]) {
+      out += ' ';
+      number(form == 4 ? static_cast<std::int64_t>(corner) - vertices
+                       : static_cast<std::int64_t>(corner) + 1,
+             kAfter[form]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 namespace {
 template <typename T>
 void append(std::string& out, T value, bool bigEndian) {

@@ -1,6 +1,6 @@
 #pragma once
 // A small polygon mesh (triangles, quads, a pentagon and a hexagon sharing
-// vertices, and an L) written as OFF text and as binary PLY of several layouts, built
+// vertices, and an L) written as OFF and OBJ text and as binary PLY of several layouts, built
 // value by value from the PLY spec, for tests of the mesh readers.
 #include <cstdint>
 #include <ostream>
@@ -37,6 +37,9 @@ inline void PrintTo(const PlyLayout& layout, std::ostream* out) { *out << descri
 PolygonMesh polygonMesh(int copies = 1);
 
 std::string offText(const PolygonMesh& mesh);
+// The same as OBJ, after all the vertices, its faces' corners in every form
+// (i, i/t, i//n, i/t/n, and counted back from the last vertex).
+std::string objText(const PolygonMesh& mesh);
 
 // Values of a PLY type named as a header names it ("uchar", "float"), in
 // the byte order of the file being built.

@@ -1,5 +1,6 @@
 #include "io/mesh_arrays.h"
 
+#include <algorithm>
 #include <string>
 
 #include "util/build_vector.h"
@@ -14,6 +15,16 @@ void sizeVertices(MeshData& mesh, MemoryBudget& budget, std::size_t count,
   mesh.vertices.resize(count);
 }
 
+void growVertices(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
+                  const std::filesystem::path& file) {
+  const std::size_t old = mesh.vertices.capacity();
+  budget.reserve(capacity * sizeof(Vec3), "load",
+                 "the vertices of " + file.filename().string() + " (room for " +
+                     std::to_string(capacity) + ")");
+  reserveOnLargePages(mesh.vertices, capacity);
+  budget.release(old * sizeof(Vec3));
+}
+
 void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                    const std::filesystem::path& file) {
   const std::size_t old = mesh.triangles.capacity();
@@ -22,6 +33,19 @@ void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                      std::to_string(capacity) + ")");
   reserveOnLargePages(mesh.triangles, capacity);
   budget.release(old * sizeof(TriangleIndices));
+}
+
+void appendTriangles(MeshData& mesh, MemoryBudget& budget, const MeshChunk& chunk,
+                     std::uint32_t firstFace, const std::filesystem::path& file) {
+  const std::size_t triangles = mesh.triangles.size() + chunk.triangles.size();
+  if (triangles > mesh.triangles.capacity())
+    growTriangles(mesh, budget, std::max(2 * mesh.triangles.capacity(), triangles), file);
+  for (PolygonFace face : chunk.polygons) {
+    face.firstTriangle += static_cast<std::uint32_t>(mesh.triangles.size());
+    face.face += firstFace;
+    mesh.polygons.push_back(face);
+  }
+  mesh.triangles.insert(mesh.triangles.end(), chunk.triangles.begin(), chunk.triangles.end());
 }
 
 }  // namespace meshtrace::mesh_arrays

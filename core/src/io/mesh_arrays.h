@@ -2,8 +2,13 @@
 // The arrays of a mesh being read, each planned in the memory budget
 // before it is allocated, with messages naming the file.
 #include <cstddef>
+#include <cstdint>
+#include <exception>
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
+#include "io/line_pieces.h"
 #include "meshtrace/geometry/mesh.h"
 #include "meshtrace/io/memory_budget.h"
 
@@ -14,9 +19,37 @@ namespace meshtrace::mesh_arrays {
 void sizeVertices(MeshData& mesh, MemoryBudget& budget, std::size_t count,
                   const std::filesystem::path& file);
 
+// Room for `capacity` vertices, for a reader that learns their number as it
+// reads: planned before it is allocated, the new array and the old one
+// until it is copied.
+void growVertices(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
+                  const std::filesystem::path& file);
+
 // Room for `capacity` triangles, planned before it is allocated: the new
 // array, and the old one until it is copied.
 void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                    const std::filesystem::path& file);
+
+// What a piece of a text mesh (OFF, OBJ) holds whatever the format, as it
+// goes through text::streamPieces: its lines' place in the file and the
+// triangles its faces were cut into.
+struct MeshChunk {
+  text::LinePiece piece;
+  std::size_t begin = 0;       // where its lines start in the piece
+  std::size_t lines = 0;       // all its lines
+  std::size_t lineBefore = 0;  // the number of the line before its first
+  std::vector<TriangleIndices> triangles;
+  std::vector<PolygonFace> polygons;   // among `triangles`, numbered from its first face
+  std::vector<std::uint32_t> corners;  // of the face being read
+  std::exception_ptr error;            // of its first bad line
+
+  std::string_view text() const { return piece.text().substr(begin); }
+};
+
+// Appends `chunk`'s triangles and polygon records to `mesh`, its first face
+// being face `firstFace` of the file, the triangle array grown first as
+// growTriangles grows it (at least doubling). Throws MemoryLimitError.
+void appendTriangles(MeshData& mesh, MemoryBudget& budget, const MeshChunk& chunk,
+                     std::uint32_t firstFace, const std::filesystem::path& file);
 
 }  // namespace meshtrace::mesh_arrays

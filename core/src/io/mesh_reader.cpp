@@ -5,6 +5,7 @@
 #include <map>
 
 #include "meshtrace/geometry/polygon.h"
+#include "meshtrace/io/obj_reader.h"
 #include "meshtrace/io/off_reader.h"
 
 namespace meshtrace {
@@ -19,8 +20,10 @@ std::string lowercase(std::string_view text) {
 
 std::map<std::string, MeshReader>& readers() {
   static std::map<std::string, MeshReader> byExtension = {
-      {".off", [](const std::filesystem::path& file, MemoryBudget& budget) {
-         return readOff(file, budget);
+      {".off", [](const std::filesystem::path& file,
+                  MemoryBudget& budget) { return readOff(file, budget); }},
+      {".obj", [](const std::filesystem::path& file, MemoryBudget& budget) {
+         return readObj(file, budget);
        }}};
   return byExtension;
 }

@@ -1,14 +1,10 @@
 #include "meshtrace/io/off_reader.h"
 
-#include <tbb/parallel_pipeline.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -16,7 +12,9 @@
 #include "io/file_source.h"
 #include "io/line_pieces.h"
 #include "io/mesh_arrays.h"
+#include "io/piece_pipeline.h"
 #include "io/text.h"
+#include "io/vertex_line.h"
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
@@ -33,15 +31,8 @@ static_assert(kMaxOffBytes <= std::uintmax_t{1} << 32, "line offsets are held in
 constexpr std::uintmax_t kMinVertexBytes = 6;
 constexpr std::uintmax_t kMinFaceBytes = 8;
 
-// The body (the vertex and face lines after the header) streams through a
-// pipeline in pieces of whole lines, several pieces in flight: read in
-// order; counted in parallel (lines and non-empty lines); numbered in order
-// (the line number and the element, vertex or face, each piece's first line
-// has); parsed in parallel; and gathered in order, where the first bad line
-// of the file is the error reported, as a serial reader would report it,
-// and reading stops. Only the pieces in flight are in memory, never the
-// whole file.
-constexpr std::size_t kPieceBytes = std::size_t{1} << 18;
+// The body (the vertex and face lines after the header) streams through
+// text::streamPieces: counted and parsed in parallel, gathered in order.
 
 class OffParser {
  public:
@@ -49,7 +40,7 @@ class OffParser {
       : file_(source.file()), source_(source), budget_(budget) {}
 
   MeshData parse() {
-    text::LinePieces pieces(source_, kPieceBytes);
+    text::LinePieces pieces(source_, text::kPieceBytes);
     auto first = std::make_unique<Chunk>();
     if (!pieces.next(first->piece) && !first->piece.nulAfter())
       throw InputError::inFile(file_, "empty file: no OFF header");
@@ -70,7 +61,8 @@ class OffParser {
                                    std::to_string(size) + "-byte file can hold");
     }
     mesh_arrays::sizeVertices(mesh_, budget_, static_cast<std::size_t>(nv_), file_);
-    growTriangles(static_cast<std::size_t>(nf_));  // exact for a triangle mesh
+    // Exact for a triangle mesh.
+    mesh_arrays::growTriangles(mesh_, budget_, static_cast<std::size_t>(nf_), file_);
     readBody(pieces, std::move(first), headerLines);
     if (error_) std::rethrow_exception(error_);
     if (elements_ < nv_ + nf_) {
@@ -85,13 +77,9 @@ class OffParser {
   }
 
  private:
-  struct Chunk {
-    text::LinePiece piece;
-    std::size_t begin = 0;       // where its lines start in the piece
-    bool loneCr = false;         // text::hasLoneCr of its lines
-    std::size_t lines = 0;       // all its lines
-    std::int64_t elements = 0;   // its non-empty lines
-    std::size_t lineBefore = 0;  // the number of the line before its first
+  struct Chunk : mesh_arrays::MeshChunk {
+    bool loneCr = false;        // text::hasLoneCr of its lines
+    std::int64_t elements = 0;  // its non-empty lines
     std::int64_t firstElement = 0;
     // Its non-empty lines, comments cut, as the count found them: the
     // parse reads these instead of finding the lines a second time.
@@ -100,12 +88,6 @@ class OffParser {
       std::uint32_t number;         // counted from the chunk's first line, from 1
     };
     std::vector<Line> nonEmpty;
-    std::vector<TriangleIndices> triangles;
-    std::vector<PolygonFace> polygons;   // among `triangles`
-    std::vector<std::uint32_t> corners;  // of the face being read
-    std::exception_ptr error;
-
-    std::string_view text() const { return piece.text().substr(begin); }
   };
 
   InputError nulError(std::size_t line) const {
@@ -157,59 +139,22 @@ class OffParser {
   }
 
   void readBody(text::LinePieces& pieces, std::unique_ptr<Chunk> first, std::size_t lineBefore) {
-    // Pieces in flight: each holds kPieceBytes, and finished chunks are
-    // reused rather than allocated again.
-    const auto tokens = static_cast<std::size_t>(4 * tbb::this_task_arena::max_concurrency());
-    std::vector<std::unique_ptr<Chunk>> spare;
-    std::mutex spareLock;
-    std::atomic<bool> done = false;  // set by the last stage, read by the first
     std::int64_t elements = 0;
-    tbb::parallel_pipeline(
-        tokens,
-        tbb::make_filter<
-            void, Chunk*>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& fc) -> Chunk* {
-          if (first) return first.release();
-          if (done) {
-            fc.stop();
-            return nullptr;
-          }
-          std::unique_ptr<Chunk> c;
-          {
-            const std::lock_guard<std::mutex> lock(spareLock);
-            if (!spare.empty()) c = std::move(spare.back()), spare.pop_back();
-          }
-          if (!c) c = std::make_unique<Chunk>();
-          if (!pieces.next(c->piece) && !c->piece.nulAfter()) {
-            fc.stop();
-            return nullptr;
-          }
-          c->begin = 0;
-          return c.release();
-        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::parallel, [](Chunk* c) {
-          count(*c);
-          return c;
-        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::serial_in_order, [&](Chunk* c) {
-          c->firstElement = elements;
-          elements += c->elements;
-          c->lineBefore = lineBefore;
-          lineBefore += c->lines;
-          return c;
-        }) & tbb::make_filter<Chunk*, Chunk*>(tbb::filter_mode::parallel, [&](Chunk* c) {
-          parseChunk(*c);
-          return c;
-        }) & tbb::make_filter<Chunk*, void>(tbb::filter_mode::serial_in_order, [&](Chunk* chunk) {
-          std::unique_ptr<Chunk> c(chunk);
-          gather(*c, done);
-          c->triangles.clear();
-          c->polygons.clear();
-          c->error = nullptr;
-          const std::lock_guard<std::mutex> lock(spareLock);
-          spare.push_back(std::move(c));
-        }));
-  }
-
-  void growTriangles(std::size_t capacity) {
-    mesh_arrays::growTriangles(mesh_, budget_, capacity, file_);
+    text::streamPieces(
+        pieces, std::move(first), count,
+        [&](Chunk& c) {
+          c.firstElement = elements;
+          elements += c.elements;
+          c.lineBefore = lineBefore;
+          lineBefore += c.lines;
+        },
+        [&](Chunk& c) { parseChunk(c); },
+        [&](Chunk& c, std::atomic<bool>& done) {
+          gather(c, done);
+          c.triangles.clear();
+          c.polygons.clear();
+          c.error = nullptr;
+        });
   }
 
   static void count(Chunk& c) {
@@ -236,25 +181,16 @@ class OffParser {
       return;
     }
     elements_ = std::min(c.firstElement + c.elements, nv_ + nf_);
-    if (mesh_.triangles.size() + c.triangles.size() > mesh_.triangles.capacity()) {
-      try {
-        growTriangles(
-            std::max(2 * mesh_.triangles.capacity(), mesh_.triangles.size() + c.triangles.size()));
-      } catch (const MemoryLimitError&) {
-        error_ = std::current_exception();
-        done = true;
-        return;
-      }
+    try {
+      // The chunk numbered its faces from its first.
+      mesh_arrays::appendTriangles(
+          mesh_, budget_, c,
+          static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_)), file_);
+    } catch (const MemoryLimitError&) {
+      error_ = std::current_exception();
+      done = true;
+      return;
     }
-    // The chunk numbered its faces and triangles from its first.
-    const auto firstFace =
-        static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_));
-    for (PolygonFace face : c.polygons) {
-      face.firstTriangle += static_cast<std::uint32_t>(mesh_.triangles.size());
-      face.face += firstFace;
-      mesh_.polygons.push_back(face);
-    }
-    mesh_.triangles.insert(mesh_.triangles.end(), c.triangles.begin(), c.triangles.end());
     if (c.piece.nulAfter()) {
       error_ = std::make_exception_ptr(nulError(c.lineBefore + c.lines + 1));
       done = true;
@@ -269,7 +205,7 @@ class OffParser {
       try {
         const std::size_t lineNumber = c.lineBefore + it->number;
         if (e < nv_)
-          mesh_.vertices[static_cast<std::size_t>(e)] = readVertex(line, e, lineNumber);
+          mesh_.vertices[static_cast<std::size_t>(e)] = vertexOf(line, e, lineNumber);
         else
           readFace(line, e - nv_, lineNumber, c);
       } catch (const InputError&) {
@@ -279,20 +215,9 @@ class OffParser {
     }
   }
 
-  Vec3 readVertex(std::string_view line, std::int64_t index, std::size_t lineNumber) const {
-    const auto fail = [&](const std::string& what) {
-      throw InputError::atLine(file_, lineNumber, "vertex " + std::to_string(index) + what);
-    };
+  Vec3 vertexOf(std::string_view line, std::int64_t index, std::size_t lineNumber) const {
     text::TokenReader tokens(line);
-    Vec3 v;
-    for (int k = 0; k < 3; ++k) {
-      std::string_view token;
-      const text::NumberToken read = tokens.nextDouble(v[k], token);
-      if (read == text::NumberToken::LineEnded) fail(" has fewer than 3 coordinates");
-      if (read == text::NumberToken::NotANumber) fail(": " + quoted(token) + " is not a number");
-      if (!std::isfinite(v[k])) fail(element_problems::nonFiniteCoordinate(token));
-    }
-    return v;
+    return text::readVertexCoordinates(tokens, file_, lineNumber, index);
   }
 
   void readFace(std::string_view line, std::int64_t index, std::size_t lineNumber, Chunk& c) const {

@@ -128,7 +128,7 @@ std::vector<BadMesh> badMeshes() {
        "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n",
        {"index_ahead.obj:3", "'3'", "above"}},
       {"two_corners.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", {"two_corners.obj:3", "2 corners"}},
-      {"short_vertex.obj", "v 0 0\n", {"short_vertex.obj:1", "three numbers"}},
+      {"short_vertex.obj", "v 0 0\n", {"short_vertex.obj:1", "fewer than 3 coordinates"}},
       {"nul.obj", std::string("v 0 0 0\nv 1 0 0\n\0", 17), {"nul.obj:3", "NUL"}},
       {"short_header.om", "OM\x01", {"short_header.om", "not an OM file"}},
       {"huge_counts.om",

@@ -101,6 +101,20 @@ TEST_F(MeshFormats, BinaryPlyLoadsThePolygonsOpenMeshLoads) {
   }
 }
 
+// OBJ, read by OpenMesh before the core had a reader of its own, loads to
+// the mesh OpenMesh's reader makes of it (its coordinates exact in float),
+// polygons triangulated alike, with every form of corner.
+TEST_F(MeshFormats, ObjLoadsThePolygonsOpenMeshLoads) {
+  const auto file =
+      test::writeFile(test::scratchDir() / "polygons.obj", test::objText(test::polygonMesh(3)));
+  MemoryBudget budget(defaultMemoryLimit());
+  const MeshData ours = readMesh(file, budget);
+  const MeshData openMesh = formats::readOpenMeshFile(file, budget);
+  ASSERT_GT(ours.polygons.size(), 3u);
+  EXPECT_EQ(ours.vertices, openMesh.vertices);
+  EXPECT_EQ(ours.triangles, openMesh.triangles);
+}
+
 // The binary PLY files of the tests above are read by the core's reader.
 TEST_F(MeshFormats, BinaryPlyOfEitherByteOrderIsReadByTheCoreReader) {
   const auto scratch = test::scratchDir();

@@ -1,4 +1,4 @@
-// The meshes OpenMesh reads (OBJ here) show the same load line as those
+// The meshes OpenMesh reads (ASCII PLY here) show the same load line as those
 // the core reads: on a terminal (a pseudo-terminal made by script(1)),
 // how much of the file is read, rising as it is, then "computing normals"
 // once the whole file counts as read.
@@ -15,19 +15,19 @@
 namespace meshtrace {
 namespace {
 
-TEST(OpenMeshReadProgress, AnObjFileShowsHowMuchIsRead) {
+TEST(OpenMeshReadProgress, AnAsciiPlyFileShowsHowMuchIsRead) {
   const auto dir = test::scratchDir();
-  // 250k triangles, about 10 MB of OBJ: above the 8 MB from which a load
-  // shows a line.
-  const auto obj = dir / "knot.obj";
-  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 1250, 100), test::MeshFormat::Obj,
-                      obj);
-  ASSERT_GT(std::filesystem::file_size(obj), 8u << 20);
+  // 250k triangles, about 10 MB of ASCII PLY: above the 8 MB from which a
+  // load shows a line.
+  const auto ply = dir / "knot.ply";
+  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 1250, 100),
+                      test::MeshFormat::PlyAscii, ply);
+  ASSERT_GT(std::filesystem::file_size(ply), 8u << 20);
   const auto r = test::runOnTerminal(
-      test::raytraceTool().string() + " " + obj.string() + " " + (dir / "out.png").string(), dir);
+      test::raytraceTool().string() + " " + ply.string() + " " + (dir / "out.png").string(), dir);
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   std::set<std::string> shares;
-  const std::string line = "loading knot.obj: ";
+  const std::string line = "loading knot.ply: ";
   for (std::size_t at = r.out.find(line); at != std::string::npos; at = r.out.find(line, at + 1)) {
     const std::size_t start = at + line.size();
     const std::size_t percent = r.out.find('%', start);
