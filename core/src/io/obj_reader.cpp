@@ -138,12 +138,10 @@ class ObjParser {
     corners.clear();
     for (;;) {
       std::int64_t i = 0;
-      const text::NumberToken read = tokens.nextInt64(i, token);
-      if (read == text::NumberToken::LineEnded) break;
       // "i/t", "i//n", "i/t/n": the vertex index is before the first '/'.
-      if (read == text::NumberToken::NotANumber &&
-          !text::parseInt64(token.substr(0, token.find('/')), i))
-        i = 0;
+      const text::NumberToken read = tokens.nextLeadingInt64(i, token);
+      if (read == text::NumberToken::LineEnded) break;
+      if (read == text::NumberToken::NotANumber) i = 0;
       const std::int64_t v = i > 0 ? i - 1 : above + i;
       if (i == 0 || !element_problems::validIndex(v, above))
         fail(": corner " + quoted(token) + " names none of the " + std::to_string(above) +

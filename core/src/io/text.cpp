@@ -104,6 +104,14 @@ bool TokenReader::next(std::string_view& token) {
 }
 
 NumberToken TokenReader::nextInt64(std::int64_t& out, std::string_view& token) {
+  return nextInteger(out, token, false);
+}
+
+NumberToken TokenReader::nextLeadingInt64(std::int64_t& out, std::string_view& token) {
+  return nextInteger(out, token, true);
+}
+
+NumberToken TokenReader::nextInteger(std::int64_t& out, std::string_view& token, bool toSlash) {
   if (!skipSpaces()) return NumberToken::LineEnded;
   // Up to 18 digits cannot overflow; a token that is not only such digits
   // (a sign, more digits, anything else) is left to parseInt64.
@@ -123,14 +131,20 @@ NumberToken TokenReader::nextInt64(std::int64_t& out, std::string_view& token) {
     const auto digit = static_cast<unsigned>(*p - '0');
     if (digit <= 9) value = value * 10 + static_cast<std::int64_t>(digit), ++p;
   }
-  if (p > start && (p == end || isSpace(*p))) {
-    token = std::string_view(start, static_cast<std::size_t>(p - start));
-    pos_ = static_cast<std::size_t>(p - line_.data());
+  if (p > start && (p == end || isSpace(*p) || (toSlash && *p == '/'))) {
     out = value;
+    if (toSlash) {
+      token = rest();
+    } else {
+      token = std::string_view(start, static_cast<std::size_t>(p - start));
+      pos_ = static_cast<std::size_t>(p - line_.data());
+    }
     return NumberToken::Read;
   }
   token = rest();
-  return parseInt64(token, out) ? NumberToken::Read : NumberToken::NotANumber;
+  return parseInt64(toSlash ? token.substr(0, token.find('/')) : token, out)
+             ? NumberToken::Read
+             : NumberToken::NotANumber;
 }
 
 NumberToken TokenReader::nextDouble(double& out, std::string_view& token) {

@@ -69,8 +69,13 @@ class TokenReader {
   // line ended.
   NumberToken nextInt64(std::int64_t& out, std::string_view& token);
   NumberToken nextDouble(double& out, std::string_view& token);
+  // The integer before the first '/' of the next token, or the whole token
+  // without one (an OBJ corner: "7", "7/2", "7//5", "7/2/5"), as parseInt64
+  // reads that part; `token` is set to the whole token.
+  NumberToken nextLeadingInt64(std::int64_t& out, std::string_view& token);
 
  private:
+  NumberToken nextInteger(std::int64_t& out, std::string_view& token, bool toSlash);
   // Skips spaces: false at the end of the line.
   bool skipSpaces();
   // The token from the current position, which is then after it.

@@ -68,28 +68,57 @@ std::string lineWith(const std::string& token, const std::string& before,
   return before + token + after + "9";
 }
 
-TEST(TokenNumbers, InPlaceIntegersAgreeWithParsingTheFoundToken) {
-  for (const std::string& token : kTokens) {
-    for (const std::string& space : {std::string(" "), std::string("\t\r")}) {
-      const std::string line = lineWith(token, space, space);
-      text::TokenReader found(line), inPlace(line);
-      std::string_view word, seen;
-      ASSERT_TRUE(found.next(word));
-      std::int64_t expected = -1, got = -2;
-      const bool parses = text::parseInt64(word, expected);
-      const text::NumberToken read = inPlace.nextInt64(got, seen);
-      EXPECT_EQ(read == text::NumberToken::Read, parses) << "token '" << token << "'";
-      EXPECT_EQ(seen, word) << "token '" << token << "'";
-      if (parses) {
-        EXPECT_EQ(got, expected) << "token '" << token << "'";
-      }
-      // Both continue at the same place.
-      std::string_view nextFound, nextInPlace;
-      ASSERT_TRUE(found.next(nextFound));
-      ASSERT_TRUE(inPlace.next(nextInPlace));
-      EXPECT_EQ(nextFound, nextInPlace) << "token '" << token << "'";
-    }
+// Reads the first token of `line` both ways, found and then parsed by
+// `parse`, and in place by `read`: they must agree on whether it is a
+// number, on its value and its token, and continue at the same place.
+template <typename Parse, typename Read>
+void expectInPlaceReadingAgrees(const std::string& line, const std::string& token,
+                                const Parse& parse, const Read& read) {
+  text::TokenReader found(line), inPlace(line);
+  std::string_view word, seen;
+  ASSERT_TRUE(found.next(word));
+  std::int64_t expected = -1, got = -2;
+  const bool parses = parse(word, expected);
+  EXPECT_EQ(read(inPlace, got, seen) == text::NumberToken::Read, parses)
+      << "token '" << token << "'";
+  EXPECT_EQ(seen, word) << "token '" << token << "'";
+  if (parses) {
+    EXPECT_EQ(got, expected) << "token '" << token << "'";
   }
+  std::string_view nextFound, nextInPlace;
+  ASSERT_TRUE(found.next(nextFound));
+  ASSERT_TRUE(inPlace.next(nextInPlace));
+  EXPECT_EQ(nextFound, nextInPlace) << "token '" << token << "'";
+}
+
+TEST(TokenNumbers, InPlaceIntegersAgreeWithParsingTheFoundToken) {
+  for (const std::string& token : kTokens)
+    for (const std::string& space : {std::string(" "), std::string("\t\r")})
+      expectInPlaceReadingAgrees(
+          lineWith(token, space, space), token,
+          [](std::string_view word, std::int64_t& out) { return text::parseInt64(word, out); },
+          [](text::TokenReader& r, std::int64_t& out, std::string_view& seen) {
+            return r.nextInt64(out, seen);
+          });
+}
+
+// OBJ corners: the integer before the first '/', read where it stands,
+// agrees with parsing that part of the found token, for every token above
+// and each of them with a slash and more after it.
+TEST(TokenNumbers, LeadingIntegersAgreeWithParsingTheFoundTokensStart) {
+  std::vector<std::string> tokens = kTokens;
+  for (const std::string& token : kTokens)
+    for (const char* after : {"/", "/2", "//5", "/2/5", "/x"}) tokens.push_back(token + after);
+  for (const char* odd : {"/", "//", "/5", "-/1", "+7/1"}) tokens.push_back(odd);
+  for (const std::string& token : tokens)
+    expectInPlaceReadingAgrees(
+        lineWith(token, " ", "\t"), token,
+        [](std::string_view word, std::int64_t& out) {
+          return text::parseInt64(word.substr(0, word.find('/')), out);
+        },
+        [](text::TokenReader& r, std::int64_t& out, std::string_view& seen) {
+          return r.nextLeadingInt64(out, seen);
+        });
 }
 
 TEST(TokenNumbers, InPlaceDoublesAgreeWithParsingTheFoundToken) {
