@@ -82,14 +82,15 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
   return contributes;
 }
 
-// Adds each triangle's angle-weighted normal to its corners' sums, in
-// triangle order, for the triangles `counts` accepts. The corner angles
-// (two atan2 a triangle, most of the work) are taken in parallel, a chunk
-// of triangles at a time, while the chunks before are summed in order: the
-// sums, and so the normals, do not depend on the thread count.
-template <typename Counts>
+// Adds each triangle's angle-weighted normal to the sums of its corners
+// that `into` accepts, in triangle order, for the triangles `counts`
+// accepts. The corner angles (two atan2 a triangle, most of the work) are
+// taken in parallel, a chunk of triangles at a time, while the chunks
+// before are summed in order: the sums, and so the normals, do not depend
+// on the thread count.
+template <typename Counts, typename Into>
 void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& triangleNormals,
-                             const Counts& counts, std::vector<Vec3>& sums) {
+                             const Counts& counts, const Into& into, std::vector<Vec3>& sums) {
   struct Chunk {
     std::size_t begin = 0, end = 0;
     std::vector<Vec3> angles;
@@ -129,7 +130,8 @@ void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& tria
                   if (!counts(i)) continue;
                   const TriangleIndices& t = mesh.triangles[i];
                   const Vec3& w = c->angles[i - c->begin];
-                  for (int k = 0; k < 3; ++k) sums[t[k]] += w[k] * triangleNormals[i];
+                  for (int k = 0; k < 3; ++k)
+                    if (into(t[k])) sums[t[k]] += w[k] * triangleNormals[i];
                 }
               }));
 }
@@ -149,8 +151,10 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
   // been had only those been added.
   std::vector<char> contributes;
   const auto hasArea = [&](std::size_t i) { return triangleNormals[i] != Vec3(0.0); };
-  tbb::parallel_invoke([&] { contributes = contributingTriangles(mesh, triangleNormals); },
-                       [&] { sumAngleWeightedNormals(mesh, triangleNormals, hasArea, normals); });
+  const auto everyCorner = [](std::uint32_t) { return true; };
+  tbb::parallel_invoke(
+      [&] { contributes = contributingTriangles(mesh, triangleNormals); },
+      [&] { sumAngleWeightedNormals(mesh, triangleNormals, hasArea, everyCorner, normals); });
   std::vector<char> redo;
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     if (contributes[i] || !hasArea(i)) continue;
@@ -158,15 +162,14 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
     for (const std::uint32_t v : mesh.triangles[i]) redo[v] = 1;
   }
   if (!redo.empty()) {
-    for (std::size_t v = 0; v < normals.size(); ++v)
-      if (redo[v]) normals[v] = Vec3(0.0);
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto remade = [&](std::uint32_t v) { return redo[v] != 0; };
+    for (std::uint32_t v = 0; v < normals.size(); ++v)
+      if (remade(v)) normals[v] = Vec3(0.0);
+    const auto countsThere = [&](std::size_t i) {
       const TriangleIndices& t = mesh.triangles[i];
-      if (!contributes[i] || !(redo[t[0]] || redo[t[1]] || redo[t[2]])) continue;
-      const Vec3 w = cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
-      for (int k = 0; k < 3; ++k)
-        if (redo[t[k]]) normals[t[k]] += w[k] * triangleNormals[i];
-    }
+      return contributes[i] && (remade(t[0]) || remade(t[1]) || remade(t[2]));
+    };
+    sumAngleWeightedNormals(mesh, triangleNormals, countsThere, remade, normals);
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
