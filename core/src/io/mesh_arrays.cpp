@@ -15,24 +15,30 @@ void sizeVertices(MeshData& mesh, MemoryBudget& budget, std::size_t count,
   mesh.vertices.resize(count);
 }
 
+namespace {
+// Room for `capacity` elements in `array`, "the `what` of FILE": the new
+// array planned in `budget` before it is allocated, the old one given back
+// once it is copied.
+template <typename T>
+void grow(std::vector<T>& array, MemoryBudget& budget, std::size_t capacity, const char* what,
+          const std::filesystem::path& file) {
+  const std::size_t old = array.capacity();
+  budget.reserve(capacity * sizeof(T), "load",
+                 std::string("the ") + what + " of " + file.filename().string() + " (room for " +
+                     std::to_string(capacity) + ")");
+  reserveOnLargePages(array, capacity);
+  budget.release(old * sizeof(T));
+}
+}  // namespace
+
 void growVertices(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                   const std::filesystem::path& file) {
-  const std::size_t old = mesh.vertices.capacity();
-  budget.reserve(capacity * sizeof(Vec3), "load",
-                 "the vertices of " + file.filename().string() + " (room for " +
-                     std::to_string(capacity) + ")");
-  reserveOnLargePages(mesh.vertices, capacity);
-  budget.release(old * sizeof(Vec3));
+  grow(mesh.vertices, budget, capacity, "vertices", file);
 }
 
 void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                    const std::filesystem::path& file) {
-  const std::size_t old = mesh.triangles.capacity();
-  budget.reserve(capacity * sizeof(TriangleIndices), "load",
-                 "the triangles of " + file.filename().string() + " (room for " +
-                     std::to_string(capacity) + ")");
-  reserveOnLargePages(mesh.triangles, capacity);
-  budget.release(old * sizeof(TriangleIndices));
+  grow(mesh.triangles, budget, capacity, "triangles", file);
 }
 
 void appendTriangles(MeshData& mesh, MemoryBudget& budget, const MeshChunk& chunk,

@@ -15,8 +15,9 @@ namespace meshtrace {
 // Throws InputError naming the file and the line on bad input: a vertex
 // without three finite numbers, a face of fewer than three corners or more
 // corners than there are vertices above it, a corner naming no vertex
-// defined above it, a NUL byte, no vertex at all. The vertex and triangle arrays are planned
-// in `budget` before they are allocated (MemoryLimitError beyond its limit).
+// defined above it, a NUL byte, no vertex at all. The vertex and triangle
+// arrays are planned in `budget` before they are allocated
+// (MemoryLimitError beyond its limit).
 MeshData readObj(const std::filesystem::path& file, MemoryBudget& budget);
 
 }  // namespace meshtrace
