@@ -144,7 +144,9 @@ inline int BlockRay::candidates(const TriangleBlock4& b, int count, double tMin,
   const float far = std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
   const __m128 farV = splat(far);
   inside = _mm_and_ps(inside, _mm_cmple_ps(teeS, add(add(mul(farV, absDet), mT), mul(farV, mDet))));
-  if (tMin > 0) {
+  // tMin = 0 too: every query of a render has it, and without this test
+  // the triangles a leaf holds behind the ray's origin would all pass.
+  if (tMin >= 0) {
     const __m128 nearV = splat(static_cast<float>(tMin * tScale_ * (1 - 0x1p-20)));
     inside =
         _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));

@@ -153,6 +153,34 @@ TEST(TriangleBlockFilter, DropsNearlyAllMissedTrianglesForDoubleKernels) {
   EXPECT_LT(passedMisses, 3 * c.hits);
 }
 
+// With tMin = 0, as every query of a render has, a triangle the ray's line
+// crosses behind its origin is no candidate: from the centre of a sphere,
+// the triangle straight behind is dropped, not passed on to be rejected.
+TEST(TriangleBlockFilter, DropsTheTriangleBehindTheOrigin) {
+  const Blocks b = makeBlocks(makeIcosphere(Vec3(0.0), 1.0, 2));
+  const auto& v = b.mesh.vertices();
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> n;
+  int behind = 0, passedBehind = 0;
+  for (int r = 0; r < 200; ++r) {
+    const Vec3 d = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+    const BlockRay blockRay({Vec3(0.0), d}, b.frame, {});
+    const TriangleRay backward({Vec3(0.0), -d}, {});
+    for (std::size_t k = 0; k < b.blocks.size(); ++k) {
+      const int mask = blockRay.candidates(b.blocks[k], b.counts[k], 0.0, kInfinity);
+      for (int lane = 0; lane < b.counts[k]; ++lane) {
+        const auto& t = b.mesh.triangles()[b.blocks[k].id[lane]];
+        TriangleHit hit;
+        if (!backward.intersect(v[t[0]], v[t[1]], v[t[2]], 0.0, kInfinity, hit)) continue;
+        ++behind;
+        passedBehind += mask >> lane & 1;
+      }
+    }
+  }
+  EXPECT_GE(behind, 200);
+  EXPECT_EQ(passedBehind, 0);
+}
+
 TEST(TriangleBlockFilter, AbsurdlyFarOriginPassesEveryLaneToTheExactKernel) {
   const Blocks b = makeBlocks(makeIcosphere(Vec3(0.0), 1.0, 1));
   const Ray ray{Vec3(1e30, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0)};
