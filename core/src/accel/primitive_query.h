@@ -81,6 +81,13 @@ class PrimitiveQuery {
     TriangleHit th;
     return triangle(mesh, tri, tMax, th);
   }
+  // triangleBlocks for a triangle the float filter proved a hit before
+  // tMax (BlockRay::classify): true without the exact test, unless it is
+  // the triangle the ray starts on, which is never tested.
+  bool certainTriangleBlocks(std::uint32_t mesh, std::uint32_t tri) const {
+    ++counters_.triangleTests;
+    return !(tri == startTriangle_ && mesh == startMesh_);
+  }
 
   // Spheres, planes and cylinders by kind and index.
   void offerShape(ObjectKind kind, std::uint32_t i, ClosestHit& closest) const {
@@ -177,6 +184,10 @@ class AnyHitSearch {
   bool shape(ObjectKind kind, std::uint32_t i) { return query_.shapeBlocks(kind, i, tMax_); }
   bool triangle(std::uint32_t mesh, std::uint32_t tri) {
     return query_.triangleBlocks(mesh, tri, tMax_);
+  }
+  // A triangle the float filter proved a hit before the limit.
+  bool certainTriangle(std::uint32_t mesh, std::uint32_t tri) {
+    return query_.certainTriangleBlocks(mesh, tri);
   }
 
  private:

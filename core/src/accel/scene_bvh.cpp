@@ -109,19 +109,37 @@ template <typename Visit>
   return set.meshCount() == 1 ? visit(SoleMesh(set)) : visit(ManyMeshes(set));
 }
 
-// The lanes of the block that the float filter passes on to the exact test.
+// The lanes of the block that the float filter passes on to the exact test,
+// and for an any-hit search those it finds certain hits (BlockRay::classify).
 // Every lane counts as one triangle test: those dropped here, the others in
-// the exact test.
+// the exact test or as a certain hit.
 // The exact test starts by reading the triangle's vertex indices from its
 // mesh, a cache miss on a large mesh; asking for them before the filter
 // runs overlaps that wait with it.
-template <typename Mesh>
-int candidateLanes(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
-                   const Mesh& mesh, double tMin, double tMax, Counters& counters) {
+template <HitKind kKind, typename Mesh>
+BlockRay::Lanes filterLanes(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
+                            const Mesh& mesh, double tMin, double tMax, Counters& counters) {
   for (std::uint32_t k = 0; k < n; ++k) prefetchLine(mesh.row(block.id[k]));
-  const int mask = ray.candidates(block, static_cast<int>(n), tMin, tMax);
-  counters.triangleTests += n - laneCount(mask);
-  return mask;
+  BlockRay::Lanes lanes{0, 0};
+  if constexpr (kKind == HitKind::Any)
+    lanes = ray.classify(block, static_cast<int>(n), tMin, tMax);
+  else
+    lanes.candidates = ray.candidates(block, static_cast<int>(n), tMin, tMax);
+  counters.triangleTests += n - laneCount(lanes.candidates);
+  return lanes;
+}
+
+// Whether an any-hit search takes one of the certain lanes as its blocker
+// without the exact test: any of them but the triangle the ray leaves.
+template <typename Search, typename Mesh>
+bool takesCertainLane(Search& search, const TriangleBlock4& block, int certain, const Mesh& mesh) {
+  if constexpr (Search::kKind == HitKind::Any) {
+    for (; certain; certain &= certain - 1) {
+      const PrimitiveRef t = mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(certain))]);
+      if (search.certainTriangle(t.object, t.triangle)) return true;
+    }
+  }
+  return false;
 }
 
 // Calls exact(triangle) with the PrimitiveRef of each lane in `lanes` until
@@ -147,14 +165,19 @@ void prefetchVertices(const TriangleBlock4& block, int lanes, const Mesh& mesh) 
   }
 }
 
-// candidateLanes, then the exact test of each, as above.
-template <typename Locate, typename Exact>
-[[gnu::always_inline]] inline bool forEachCandidate(const BlockRay& ray,
-                                                    const TriangleBlock4& block, std::uint32_t n,
-                                                    const Locate& locate, double tMin, double tMax,
-                                                    Counters& counters, Exact&& exact) {
+// One ray's search through a block: the filter, a certain lane for an
+// any-hit search, then the exact test of each candidate, as above.
+template <typename Search, typename Locate>
+[[gnu::always_inline]] inline bool searchBlock(Search& search, const BlockRay& ray,
+                                               const TriangleBlock4& block, std::uint32_t n,
+                                               const Locate& locate, double tMin,
+                                               Counters& counters) {
   const auto& mesh = locate.of(block);
-  return forEachLane(block, candidateLanes(ray, block, n, mesh, tMin, tMax, counters), mesh, exact);
+  const BlockRay::Lanes lanes =
+      filterLanes<Search::kKind>(ray, block, n, mesh, tMin, search.limit(), counters);
+  if (takesCertainLane(search, block, lanes.certain, mesh)) return true;
+  return forEachLane(block, lanes.candidates, mesh,
+                     [&](const PrimitiveRef& t) { return search.triangle(t.object, t.triangle); });
 }
 
 // What the triangle BVH's traversals ask for ahead: a leaf's data is its
@@ -307,9 +330,8 @@ bool SceneBvh::traceBounded(const SlabRay& ray, Search& search, Counters& counte
     const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
       LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
       const auto blockLeaf = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
-        return forEachCandidate(
-            blockRay.get(), meshBvh_.blocks[block], n, locate, tMin, search.limit(), counters,
-            [&](const PrimitiveRef& t) { return search.triangle(t.object, t.triangle); });
+        return searchBlock(search, blockRay.get(), meshBvh_.blocks[block], n, locate, tMin,
+                           counters);
       };
       return traverse<kKind>(meshBvh_.tree, ray, tMin, search.limit(), visits, blockLeaf,
                              childPrefetch(meshBvh_));
@@ -381,19 +403,23 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
         const TriangleBlock4& block = meshBvh_.blocks[index];
         const auto& mesh = locate.of(block);
         // Every ray's filter first, then the exact tests.
-        int lanes[kPacketSize] = {};
+        BlockRay::Lanes lanes[kPacketSize] = {};
         int any = 0;
-        for (int r = 0; r < kPacketSize; ++r) {
-          if (!(meeting >> r & 1)) continue;
-          lanes[r] = candidateLanes(blockRay.get(r), block, n, mesh, tMin[r], searches[r].limit(),
-                                    counters);
-          any |= lanes[r];
-        }
-        if (kKind == HitKind::Closest && meshBvh_.prefetch) prefetchVertices(block, any, mesh);
         std::uint32_t now = 0;
         for (int r = 0; r < kPacketSize; ++r) {
+          if (!(meeting >> r & 1)) continue;
+          lanes[r] = filterLanes<kKind>(blockRay.get(r), block, n, mesh, tMin[r],
+                                        searches[r].limit(), counters);
+          any |= lanes[r].candidates;
+          if (takesCertainLane(searches[r], block, lanes[r].certain, mesh)) {
+            now |= 1u << r;
+            lanes[r].candidates = 0;
+          }
+        }
+        if (kKind == HitKind::Closest && meshBvh_.prefetch) prefetchVertices(block, any, mesh);
+        for (int r = 0; r < kPacketSize; ++r) {
           Search& search = searches[r];
-          if (forEachLane(block, lanes[r], mesh, [&](const PrimitiveRef& t) {
+          if (forEachLane(block, lanes[r].candidates, mesh, [&](const PrimitiveRef& t) {
                 return search.triangle(t.object, t.triangle);
               }))
             now |= 1u << r;

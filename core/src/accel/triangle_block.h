@@ -59,15 +59,31 @@ class BlockRay {
 
   // Bit i set if lane i of `block` may hold a hit at tMin <= t <= tMax
   // (world distances) for the exact kernel; lanes past `count` are clear.
-  int candidates(const TriangleBlock4& block, int count, double tMin, double tMax) const;
+  int candidates(const TriangleBlock4& block, int count, double tMin, double tMax) const {
+    return test<false>(block, count, tMin, tMax).candidates;
+  }
+  // candidates, and beside them the lanes the exact kernel is sure to hit at
+  // tMin < t < tMax (a subset): an any-hit search needs no exact test of
+  // those. Only double-precision kernels are ever sure.
+  struct Lanes {
+    int candidates, certain;
+  };
+  Lanes classify(const TriangleBlock4& block, int count, double tMin, double tMax) const {
+    return test<true>(block, count, tMin, tMax);
+  }
 
  private:
+  template <bool kCertain>
+  Lanes test(const TriangleBlock4& block, int count, double tMin, double tMax) const;
+
   __m128 origin_[3], direction_[3];
   float originError_ = 0.0f;    // bound on the error of o' - v0 (see the .cpp)
   float kernelError_ = 0.0f;    // the exact kernel's own input error, as a length
   float directionSize_ = 0.0f;  // largest |d'| component, rounded up
-  double tScale_ = 1.0;         // local t = world t * tScale_
-  bool filter_ = true;          // false: every lane is a candidate (absurd magnitudes)
+  float inverseDirection_ = 0.0f;  // 1 / |d| (largest world component), rounded up
+  double tScale_ = 1.0;            // local t = world t * tScale_
+  bool filter_ = true;             // false: every lane is a candidate (absurd magnitudes)
+  bool sure_ = false;              // whether classify() may call lanes certain
 };
 
 // Cramer's rule in triple products: with s = o - v0, p = d x e2, q = s x e1,
@@ -79,10 +95,21 @@ class BlockRay {
 // second-order terms and the rounding of m itself). A lane is dropped only
 // if, with every quantity moved by its m against it, it still fails a
 // condition: so a triangle the exact kernel accepts is never dropped.
-inline int BlockRay::candidates(const TriangleBlock4& b, int count, double tMin,
-                                double tMax) const {
+//
+// Conversely a lane is certain only if, with every quantity moved by its m
+// against it, it still passes every condition with room to spare: the
+// exact kernel, whose arithmetic the bounds treat as input error, then
+// accepts it too. The watertight kernel also refuses a t within its own
+// rounding bound (pbrt-v4's deltaT); with R bounding |v - o| (local), D the
+// world direction's largest component and gamma_n = n u_double / (1 - n
+// u_double), working that bound through the sheared coordinates gives
+//   deltaT det < 3 R (2 gamma_3 det + 8 gamma_5 R^2 (3 + 1/D)),
+// which a certain lane's t det must exceed as well.
+template <bool kCertain>
+inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double tMin,
+                                      double tMax) const {
   const int valid = (1 << count) - 1;
-  if (!filter_) return valid;
+  if (!filter_) return {valid, 0};
   constexpr float u = 0x1p-24f;
   const __m128 signBit = _mm_set1_ps(-0.0f);
   const auto abs = [&](__m128 x) { return _mm_andnot_ps(signBit, x); };
@@ -151,7 +178,32 @@ inline int BlockRay::candidates(const TriangleBlock4& b, int count, double tMin,
     inside =
         _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));
   }
-  return _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+  const int candidates = _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+  if (!kCertain || !sure_ || !candidates) return {candidates, 0};
+
+  // Sums of positive terms, each rounded; so scaled they stay bounds.
+  const __m128 up = splat(1 + 0x1p-20f), down = splat(1 - 0x1p-20f);
+  const __m128 detLow = sub(absDet, mDet), detHigh = add(absDet, mDet);
+  __m128 sure = _mm_and_ps(_mm_cmpgt_ps(detLow, _mm_setzero_ps()),
+                           _mm_and_ps(_mm_cmpgt_ps(betS, mBary), _mm_cmpgt_ps(gamS, mBary)));
+  const __m128 baryHigh = add(add(betS, gamS), add(add(mBary, mBary), mDet));
+  sure = _mm_and_ps(sure, _mm_cmplt_ps(mul(baryHigh, up), detLow));
+  // t det above tMin det and the watertight kernel's deltaT det.
+  const __m128 r = add(sB, eB);
+  const __m128 deltaT =
+      mul(mul(splat(3.0f), r),
+          add(mul(splat(0x1p-50f), detHigh),
+              mul(mul(mul(splat(0x1p-47f), r), r), add(splat(3.0f), splat(inverseDirection_)))));
+  const float nearSure = static_cast<float>(std::max(tMin, 0.0) * tScale_ * (1 + 0x1p-20));
+  const __m128 teeLow = add(add(mT, mul(splat(nearSure), detHigh)), deltaT);
+  sure = _mm_and_ps(sure, _mm_cmpgt_ps(teeS, mul(teeLow, up)));
+  // t det below tMax det.
+  const double farSure = tMax * tScale_ * (1 - 0x1p-20);
+  if (!(farSure >= 0x1p127))  // NaN included: then nothing is certain
+    sure =
+        _mm_and_ps(sure, _mm_cmplt_ps(mul(add(teeS, mT), up),
+                                      mul(mul(splat(static_cast<float>(farSure)), detLow), down)));
+  return {candidates, _mm_movemask_ps(sure) & candidates};
 }
 
 }  // namespace meshtrace

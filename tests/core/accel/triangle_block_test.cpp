@@ -50,17 +50,29 @@ MeshData transformed(MeshData m, double scale, const Vec3& offset) {
   return m;
 }
 
-// Rays from around the mesh toward a point of one of its triangles: inside
-// it, on an edge (a barycentric exactly 0) or on a vertex.
-Ray aimedRay(const Mesh& mesh, std::mt19937_64& rng) {
+// A point of a random triangle of the mesh, and that triangle's unit
+// normal; `onEdges`: each of two barycentrics is exactly 0 a fifth of the
+// time (the point is on an edge or a vertex).
+struct MeshPoint {
+  Vec3 point, normal;
+};
+MeshPoint pointOn(const Mesh& mesh, std::mt19937_64& rng, bool onEdges) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const auto& t = mesh.triangles()[rng() % mesh.triangles().size()];
   const auto& v = mesh.vertices();
   double b = u(rng), g = u(rng);
   if (b + g > 1.0) b = 1.0 - b, g = 1.0 - g;
-  if (u(rng) < 0.2) b = 0.0;
-  if (u(rng) < 0.2) g = 0.0;
-  const Vec3 target = (1.0 - b - g) * v[t[0]] + b * v[t[1]] + g * v[t[2]];
+  if (onEdges && u(rng) < 0.2) b = 0.0;
+  if (onEdges && u(rng) < 0.2) g = 0.0;
+  return {(1.0 - b - g) * v[t[0]] + b * v[t[1]] + g * v[t[2]],
+          glm::normalize(glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]))};
+}
+
+// Rays from around the mesh toward a point of one of its triangles: inside
+// it, on an edge (a barycentric exactly 0) or on a vertex.
+Ray aimedRay(const Mesh& mesh, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Vec3 target = pointOn(mesh, rng, true).point;
   const Vec3 e = mesh.bounds().extent();
   const Vec3 origin = mesh.bounds().min - e + 3.0 * Vec3(u(rng), u(rng), u(rng)) * e;
   Vec3 d = target - origin;
@@ -106,6 +118,26 @@ FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::u
   return c;
 }
 
+struct NamedMesh {
+  const char* name;
+  MeshData data;
+};
+
+// Meshes at every scale and distance, and one of needles (a knot's tube
+// 1e-5 wide): where the filter's bounds are tightest.
+std::vector<NamedMesh> scaledMeshes() {
+  const MeshData sphere = makeIcosphere(Vec3(0.3, -0.2, 0.1), 1.0, 2);
+  return {
+      {"icosphere", sphere},
+      {"knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.2, 48, 6)},
+      {"needles", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 1e-5, 400, 3)},
+      {"far away (1e6)", transformed(sphere, 1.0, Vec3(1e6, -2e6, 5e5))},
+      {"tiny (1e-4)", transformed(sphere, 1e-4, Vec3(0.0))},
+      {"tiny and far", transformed(sphere, 1e-3, Vec3(1e3, 0.0, -1e3))},
+      {"huge (1e8)", transformed(sphere, 1e8, Vec3(0.0))},
+  };
+}
+
 const TriangleKernel kKernels[] = {{TriangleTest::Watertight, Precision::Double},
                                    {TriangleTest::Cramer, Precision::Double},
                                    {TriangleTest::MollerTrumbore, Precision::Double},
@@ -114,19 +146,7 @@ const TriangleKernel kKernels[] = {{TriangleTest::Watertight, Precision::Double}
                                    {TriangleTest::MollerTrumbore, Precision::Single}};
 
 TEST(TriangleBlockFilter, NeverDropsAHitOfAnyKernelAtAnyScaleOrDistance) {
-  const MeshData sphere = makeIcosphere(Vec3(0.3, -0.2, 0.1), 1.0, 2);
-  const struct {
-    const char* name;
-    MeshData data;
-  } meshes[] = {
-      {"icosphere", sphere},
-      {"knot", makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.2, 48, 6)},
-      {"far away (1e6)", transformed(sphere, 1.0, Vec3(1e6, -2e6, 5e5))},
-      {"tiny (1e-4)", transformed(sphere, 1e-4, Vec3(0.0))},
-      {"tiny and far", transformed(sphere, 1e-3, Vec3(1e3, 0.0, -1e3))},
-      {"huge (1e8)", transformed(sphere, 1e8, Vec3(0.0))},
-  };
-  for (const auto& m : meshes) {
+  for (const auto& m : scaledMeshes()) {
     const Blocks b = makeBlocks(m.data);
     for (const TriangleKernel& kernel : kKernels) {
       const FilterCount c = checkFilter(b, kernel, 300, 42);
@@ -179,6 +199,103 @@ TEST(TriangleBlockFilter, DropsTheTriangleBehindTheOrigin) {
   }
   EXPECT_GE(behind, 200);
   EXPECT_EQ(passedBehind, 0);
+}
+
+// A ray from a hair off a triangle's surface, on either side, in any
+// direction: its hits lie at t within rounding of 0, where the exact
+// kernels' own cut-offs decide.
+Ray nearSurfaceRay(const Mesh& mesh, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto [p, n] = pointOn(mesh, rng, false);
+  const double offset =
+      std::ldexp(u(rng) - 0.5, -40 - static_cast<int>(rng() % 16)) * (1.0 + maxAbsComponent(p));
+  Vec3 d(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+  if (d == Vec3(0.0)) d = n;
+  return {p + offset * n, glm::normalize(d)};
+}
+
+struct CertainCount {
+  std::uint64_t hits = 0, certainHits = 0, wrong = 0;
+  std::string example;
+};
+
+// classify()'s certain lanes against the exact kernel, for every lane and
+// several limits around each exact hit's t (a certain lane must be an
+// exact hit inside the limits, a lane at exactly tMax or tMin is not).
+CertainCount checkCertain(const Blocks& b, TriangleKernel kernel, int rays, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  CertainCount c;
+  const auto& v = b.mesh.vertices();
+  for (int r = 0; r < rays; ++r) {
+    const Ray ray = r % 2 ? aimedRay(b.mesh, rng) : nearSurfaceRay(b.mesh, rng);
+    const BlockRay blockRay(ray, b.frame, kernel);
+    const TriangleRay exact(ray, kernel);
+    for (std::size_t k = 0; k < b.blocks.size(); ++k) {
+      const TriangleBlock4& block = b.blocks[k];
+      const auto certainIn = [&](int lane, double tMin, double tMax) {
+        const BlockRay::Lanes lanes = blockRay.classify(block, b.counts[k], tMin, tMax);
+        EXPECT_EQ(lanes.certain & ~lanes.candidates, 0) << "a certain lane is no candidate";
+        return (lanes.certain >> lane & 1) != 0;
+      };
+      for (int lane = 0; lane < b.counts[k]; ++lane) {
+        const auto& t = b.mesh.triangles()[block.id[lane]];
+        TriangleHit hit;
+        const bool found = exact.intersect(v[t[0]], v[t[1]], v[t[2]], 0.0, kInfinity, hit);
+        const double th = found ? hit.t : 1.0;
+        const double limits[][2] = {{0.0, kInfinity},
+                                    {0.0, th},
+                                    {0.0, th * (1 + 1e-12)},
+                                    {th * (1 - 1e-12), kInfinity},
+                                    {th, kInfinity}};
+        for (const auto& [tMin, tMax] : limits) {
+          if (!certainIn(lane, tMin, tMax)) continue;
+          TriangleHit within;
+          if (exact.intersect(v[t[0]], v[t[1]], v[t[2]], tMin, tMax, within)) continue;
+          if (++c.wrong == 1)
+            c.example = "certain in (" + std::to_string(tMin) + ", " + std::to_string(tMax) +
+                        ") but the exact kernel " +
+                        (found ? "hits at " + std::to_string(th) : std::string("misses"));
+        }
+        c.hits += found;
+        c.certainHits += found && certainIn(lane, 0.0, kInfinity);
+      }
+    }
+  }
+  return c;
+}
+
+// An any-hit search takes a certain lane as its blocker without the exact
+// test: each must be a hit the exact kernel finds inside the search's
+// limits, for every kernel, at every scale, from near the surfaces too.
+TEST(TriangleBlockFilter, CertainLanesAreExactHitsOfEveryKernelAtAnyScaleOrDistance) {
+  for (const auto& m : scaledMeshes()) {
+    const Blocks b = makeBlocks(m.data);
+    for (const TriangleKernel& kernel : kKernels) {
+      const std::string label =
+          std::string(m.name) + ", " + toString(kernel.test) + " " + toString(kernel.precision);
+      const CertainCount c = checkCertain(b, kernel, 300, 11);
+      EXPECT_GT(c.hits, 0u) << label;
+      EXPECT_EQ(c.wrong, 0u) << label << ": " << c.example;
+      if (kernel.precision == Precision::Single) {
+        EXPECT_EQ(c.certainHits, 0u) << label << ": a single-precision kernel is never sure";
+      }
+    }
+  }
+}
+
+// And it must pay: most hits of rays aimed anywhere at a triangle (a third
+// of them exactly at an edge or a vertex, which are never certain) are
+// certain for the double kernels.
+TEST(TriangleBlockFilter, FindsMostHitsCertainForDoubleKernels) {
+  const Blocks b = makeBlocks(makeIcosphere(Vec3(0.0), 1.0, 3));
+  for (const TriangleKernel& kernel : kKernels) {
+    if (kernel.precision != Precision::Double) continue;
+    const CertainCount c = checkCertain(b, kernel, 200, 5);
+    std::printf("%s: %llu exact hits, %llu certain\n", toString(kernel.test),
+                static_cast<unsigned long long>(c.hits),
+                static_cast<unsigned long long>(c.certainHits));
+    EXPECT_GT(double(c.certainHits), 0.5 * double(c.hits)) << toString(kernel.test);
+  }
 }
 
 TEST(TriangleBlockFilter, AbsurdlyFarOriginPassesEveryLaneToTheExactKernel) {
