@@ -23,6 +23,29 @@ BlockFrame blockFrame(const Aabb& box) {
   return frame;
 }
 
+namespace {
+
+// The corner a block stores as v0, the one opposite the triangle's longest
+// edge, so that e1 and e2 are its two shortest edges (the order of the
+// corners turns, the winding stays). The filter's error bounds grow with
+// the edges' lengths |e1| |e2|, its determinant with the area |e1 x e2|:
+// from that corner the angle between them is the triangle's widest, at
+// least 60 degrees, and a long sliver (two long edges, one short) keeps
+// margins in proportion to its area. From a corner at the sliver's sharp
+// tip, both edges would be long and the margins could exceed the whole
+// determinant, passing every ray near the sliver's plane to the exact test.
+int cornerOppositeLongestEdge(const std::vector<Vec3>& v, const TriangleIndices& idx) {
+  const double opposite[3] = {glm::dot(v[idx[1]] - v[idx[2]], v[idx[1]] - v[idx[2]]),
+                              glm::dot(v[idx[2]] - v[idx[0]], v[idx[2]] - v[idx[0]]),
+                              glm::dot(v[idx[0]] - v[idx[1]], v[idx[0]] - v[idx[1]])};
+  int longest = 0;
+  for (int k = 1; k < 3; ++k)
+    if (opposite[k] > opposite[longest]) longest = k;
+  return longest;
+}
+
+}  // namespace
+
 BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
                                                const BlockFrame& frame, Bvh8& tree) {
   struct Leaf {
@@ -55,9 +78,13 @@ BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
                           const TriangleSet::Member member = triangles[t];
                           const auto& v = member.mesh->vertices();
                           const TriangleIndices& idx = member.indices();
-                          const Vec3 a = local(v[idx[0]]);
-                          const Vec3 e1 = (v[idx[1]] - v[idx[0]]) * frame.scale;
-                          const Vec3 e2 = (v[idx[2]] - v[idx[0]]) * frame.scale;
+                          const int first = cornerOppositeLongestEdge(v, idx);
+                          const Vec3& v0 = v[idx[first]];
+                          const Vec3& v1 = v[idx[(first + 1) % 3]];
+                          const Vec3& v2 = v[idx[(first + 2) % 3]];
+                          const Vec3 a = local(v0);
+                          const Vec3 e1 = (v1 - v0) * frame.scale;
+                          const Vec3 e2 = (v2 - v0) * frame.scale;
                           for (int axis = 0; axis < 3; ++axis) {
                             b.v0[axis][lane] = static_cast<float>(a[axis]);
                             b.e1[axis][lane] = static_cast<float>(e1[axis]);

@@ -136,26 +136,38 @@ inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double
   const __m128 gam = add(add(mul(d[0], q0), mul(d[1], q1)), mul(d[2], q2));
   const __m128 tee = add(add(mul(e2[0], q0), mul(e2[1], q1)), mul(e2[2], q2));
 
-  // Bounds: S on s (plus its error dS), E on the edges (plus dE), D on d
-  // (its error, 4u D, is folded into the 9u terms).
-  const __m128 sMax = _mm_max_ps(_mm_max_ps(abs(s[0]), abs(s[1])), abs(s[2]));
-  __m128 eMax = _mm_max_ps(_mm_max_ps(abs(e1[0]), abs(e1[1])), abs(e1[2]));
-  eMax = _mm_max_ps(eMax, _mm_max_ps(_mm_max_ps(abs(e2[0]), abs(e2[1])), abs(e2[2])));
-  const __m128 dS = splat(originError_);
-  const __m128 dE = add(mul(splat(u), eMax), splat(kernelError_));
-  const __m128 sB = add(sMax, dS), eB = add(eMax, dE), dB = splat(directionSize_);
+  // Bounds: S on s (plus its error dS), E1 and E2 on the edges (plus dE1,
+  // dE2), D on d (its error, 4u D, is folded into the 9u terms). Each edge
+  // keeps its own bound: a long, thin triangle's short edge would otherwise
+  // be taken as long as its long one, and its margins be larger than its
+  // whole determinant.
+  const auto max3 = [](const __m128* x) { return _mm_max_ps(_mm_max_ps(x[0], x[1]), x[2]); };
+  const __m128 absS[3] = {abs(s[0]), abs(s[1]), abs(s[2])};
+  const __m128 absE1[3] = {abs(e1[0]), abs(e1[1]), abs(e1[2])};
+  const __m128 absE2[3] = {abs(e2[0]), abs(e2[1]), abs(e2[2])};
+  const __m128 dS = splat(originError_), kernelError = splat(kernelError_);
+  const __m128 e1Max = max3(absE1), e2Max = max3(absE2);
+  const __m128 dE1 = add(mul(splat(u), e1Max), kernelError);
+  const __m128 dE2 = add(mul(splat(u), e2Max), kernelError);
+  const __m128 sB = add(max3(absS), dS), e1B = add(e1Max, dE1), e2B = add(e2Max, dE2);
+  const __m128 dB = splat(directionSize_);
   const __m128 twelve = splat(12.0f), floor = splat(0x1p-120f);
   const __m128 nineU = splat(9 * u);
-  // beta det and gamma det: x = s, y = d, z = e (or y = s, z = e1: the same
-  // bounds).
-  const __m128 mBary =
-      add(mul(mul(twelve, dB), add(mul(dS, eB), mul(sB, add(mul(nineU, eB), dE)))), floor);
+  const __m128 twelveD = mul(twelve, dB);
+  // beta det: x = s, y = d, z = e2; gamma det: x = d, y = s, z = e1.
+  const __m128 mBeta =
+      add(mul(twelveD, add(mul(dS, e2B), mul(sB, add(mul(nineU, e2B), dE2)))), floor);
+  const __m128 mGamma =
+      add(mul(twelveD, add(mul(dS, e1B), mul(sB, add(mul(nineU, e1B), dE1)))), floor);
   // det: x = e1, y = d, z = e2.
-  const __m128 mDet = add(mul(mul(mul(twelve, dB), eB), add(add(dE, dE), mul(nineU, eB))), floor);
+  const __m128 mDet =
+      add(mul(twelveD, add(add(mul(dE1, e2B), mul(e1B, dE2)), mul(mul(nineU, e1B), e2B))), floor);
   // t det: x = e2, y = s, z = e1.
-  const __m128 mT = add(mul(mul(twelve, eB), add(add(mul(add(dE, dE), sB), mul(dS, eB)),
-                                                 mul(mul(splat(5 * u), sB), eB))),
-                        floor);
+  const __m128 e1e2 = mul(e1B, e2B);
+  const __m128 mT =
+      add(mul(twelve, add(add(mul(sB, add(mul(dE2, e1B), mul(e2B, dE1))), mul(dS, e1e2)),
+                          mul(mul(splat(5 * u), sB), e1e2))),
+          floor);
 
   // Flip signs so that det > 0.
   const __m128 detSign = _mm_and_ps(det, signBit);
@@ -163,10 +175,10 @@ inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double
   const __m128 betS = _mm_xor_ps(bet, detSign), gamS = _mm_xor_ps(gam, detSign);
   const __m128 teeS = _mm_xor_ps(tee, detSign);
   const __m128 undecided = _mm_cmple_ps(absDet, mDet);
-  const __m128 negBary = _mm_xor_ps(mBary, signBit);
-  __m128 inside = _mm_and_ps(_mm_cmpge_ps(betS, negBary), _mm_cmpge_ps(gamS, negBary));
-  inside =
-      _mm_and_ps(inside, _mm_cmple_ps(add(betS, gamS), add(add(absDet, add(mBary, mBary)), mDet)));
+  __m128 inside = _mm_and_ps(_mm_cmpge_ps(betS, _mm_xor_ps(mBeta, signBit)),
+                             _mm_cmpge_ps(gamS, _mm_xor_ps(mGamma, signBit)));
+  const __m128 mBary = add(mBeta, mGamma);
+  inside = _mm_and_ps(inside, _mm_cmple_ps(add(betS, gamS), add(add(absDet, mBary), mDet)));
   // tMin' det - m <= t det <= tMax' det + m, with t' rounded outward.
   const float far = std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
   const __m128 farV = splat(far);
@@ -185,11 +197,11 @@ inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double
   const __m128 up = splat(1 + 0x1p-20f), down = splat(1 - 0x1p-20f);
   const __m128 detLow = sub(absDet, mDet), detHigh = add(absDet, mDet);
   __m128 sure = _mm_and_ps(_mm_cmpgt_ps(detLow, _mm_setzero_ps()),
-                           _mm_and_ps(_mm_cmpgt_ps(betS, mBary), _mm_cmpgt_ps(gamS, mBary)));
-  const __m128 baryHigh = add(add(betS, gamS), add(add(mBary, mBary), mDet));
+                           _mm_and_ps(_mm_cmpgt_ps(betS, mBeta), _mm_cmpgt_ps(gamS, mGamma)));
+  const __m128 baryHigh = add(add(betS, gamS), add(mBary, mDet));
   sure = _mm_and_ps(sure, _mm_cmplt_ps(mul(baryHigh, up), detLow));
   // t det above tMin det and the watertight kernel's deltaT det.
-  const __m128 r = add(sB, eB);
+  const __m128 r = add(sB, _mm_max_ps(e1B, e2B));
   const __m128 deltaT =
       mul(mul(splat(3.0f), r),
           add(mul(splat(0x1p-50f), detHigh),

@@ -201,6 +201,30 @@ TEST(TriangleBlockFilter, DropsTheTriangleBehindTheOrigin) {
   EXPECT_EQ(passedBehind, 0);
 }
 
+// A sliver 40 long and 0.05 wide, listed from its sharp tip as a box's side
+// face may be: rays whose line crosses it a few centimetres behind their
+// origin are dropped. The margins follow the sliver's area, not the
+// product of its two long edges.
+TEST(TriangleBlockFilter, DropsTheSliverBehindTheOrigin) {
+  MeshData sliver;
+  sliver.vertices = {Vec3(1.0, -0.05, -20.0), Vec3(1.0, 0.0, 20.0), Vec3(1.0, -0.05, 20.0)};
+  sliver.triangles = {{0, 1, 2}};
+  const Blocks b = makeBlocks(sliver);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int passed = 0;
+  for (int r = 0; r < 1000; ++r) {
+    double beta = u(rng), gamma = u(rng);
+    if (beta + gamma > 1.0) beta = 1.0 - beta, gamma = 1.0 - gamma;
+    const auto& v = sliver.vertices;
+    const Vec3 p = (1.0 - beta - gamma) * v[0] + beta * v[1] + gamma * v[2];
+    Vec3 d = glm::normalize(Vec3(-0.1 - u(rng), u(rng) - 0.5, u(rng) - 0.5));
+    const Ray ray{p + (0.01 + 0.09 * u(rng)) * d, d};
+    passed += BlockRay(ray, b.frame, {}).candidates(b.blocks[0], b.counts[0], 0.0, kInfinity) & 1;
+  }
+  EXPECT_EQ(passed, 0);
+}
+
 // A ray from a hair off a triangle's surface, on either side, in any
 // direction: its hits lie at t within rounding of 0, where the exact
 // kernels' own cut-offs decide.
