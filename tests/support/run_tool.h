@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "support/sanitizers.h"
+
 namespace meshtrace::test {
 
 struct ToolResult {
@@ -42,16 +44,6 @@ inline ToolResult runTool(const std::filesystem::path& tool, const std::vector<s
                           const std::filesystem::path& workDir, double timeoutSeconds = 60.0) {
   return runTool(tool, args, workDir, ToolRun{.timeoutSeconds = timeoutSeconds});
 }
-
-// Whether this build (tests and tools alike) uses AddressSanitizer, whose
-// shadow memory takes terabytes of address space: a ToolRun::addressSpace
-// limit, or one the test process sets itself, cannot apply to it.
-inline constexpr bool kBuiltWithAsan =
-#ifdef __SANITIZE_ADDRESS__
-    true;
-#else
-    false;
-#endif
 
 // Prints a ToolResult in failure messages.
 std::string describe(const ToolResult& r);

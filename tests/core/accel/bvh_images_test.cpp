@@ -20,17 +20,14 @@
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/render.h"
 #include "support/paths.h"
+#include "support/sanitizers.h"
 
 namespace meshtrace {
 namespace {
 
 // Pixels times triangles (plus objects) that brute force renders in full;
 // a costlier scene is sampled down to about this much work.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kBruteForceBudget = 4e8;
-#else
-constexpr double kBruteForceBudget = 3e9;
-#endif
+constexpr double kBruteForceBudget = test::kBuiltWithAsan ? 4e8 : 3e9;
 
 // Every stride-th pixel in storage order. A stride that shares no factor
 // with the width moves the column from row to row, so the sample covers

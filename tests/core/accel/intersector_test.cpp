@@ -27,6 +27,7 @@
 #include "meshtrace/render/spawn.h"
 #include "meshtrace/report/stability.h"
 #include "support/meshes.h"
+#include "support/sanitizers.h"
 
 namespace meshtrace {
 namespace {
@@ -180,11 +181,13 @@ bool sameHit(bool foundA, const Hit& a, bool foundB, const Hit& b) {
                       a.ref.triangle == b.ref.triangle && a.beta == b.beta && a.gamma == b.gamma));
 }
 
-// Casts `count` random rays through the BVH and brute force and counts where
-// they disagree: in the closest hit, in any-hit against brute force, in
-// any-hit against the closest hit, and for a ray spawned off each hit.
+// Casts `count` random rays (a share of them under AddressSanitizer)
+// through the BVH and brute force and counts where they disagree: in the
+// closest hit, in any-hit against brute force, in any-hit against the
+// closest hit, and for a ray spawned off each hit.
 Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
                       TriangleKernel kernel = {}, const SceneBvhOptions& bvhOptions = {}) {
+  count = test::sanitizerShare(count);
   const SceneIntersector bvh(scene,
                              {.accel = AccelMethod::Bvh, .triangle = kernel, .bvh = bvhOptions});
   const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = kernel});
