@@ -131,7 +131,9 @@ BlockRay::BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kerne
   tScale_ = frame.scale * twoToK;
   const double up = 1.0 + 0x1p-20;
   directionSize_ = static_cast<float>(dSize * twoToMinusK * up);
-  inverseDirection_ = static_cast<float>(up / dSize);
+  // 1 / dSize <= 2^-k, since dSize = |d'| 2^k with |d'| >= 1: a bound with
+  // no division.
+  inverseDirection_ = static_cast<float>(twoToMinusK);
   sure_ = kernel.precision == Precision::Double && inverseDirection_ < 0x1p60f;
   kernelError_ = static_cast<float>(kernelError * up);
   originError_ = static_cast<float>((0x1p-24 * (2 * oSize + 3) + kernelError) * up);

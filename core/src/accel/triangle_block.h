@@ -80,7 +80,7 @@ class BlockRay {
   float originError_ = 0.0f;    // bound on the error of o' - v0 (see the .cpp)
   float kernelError_ = 0.0f;    // the exact kernel's own input error, as a length
   float directionSize_ = 0.0f;  // largest |d'| component, rounded up
-  float inverseDirection_ = 0.0f;  // 1 / |d| (largest world component), rounded up
+  float inverseDirection_ = 0.0f;  // at least 1 / |d| (largest world component)
   double tScale_ = 1.0;            // local t = world t * tScale_
   bool filter_ = true;             // false: every lane is a candidate (absurd magnitudes)
   bool sure_ = false;              // whether classify() may call lanes certain
