@@ -191,7 +191,11 @@ inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double
         _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));
   }
   const int candidates = _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
-  if (!kCertain || !sure_ || !candidates) return {candidates, 0};
+  // A lane whose t det is not clearly above 0 cannot be certain: the
+  // triangle a spawned ray leaves, met by nearly every such ray, is
+  // answered here.
+  if (!kCertain || !sure_ || !(_mm_movemask_ps(_mm_cmpgt_ps(teeS, add(mT, mT))) & candidates))
+    return {candidates, 0};
 
   // Sums of positive terms, each rounded; so scaled they stay bounds.
   const __m128 up = splat(1 + 0x1p-20f), down = splat(1 - 0x1p-20f);
