@@ -1,12 +1,11 @@
 #pragma once
-#include <cstdint>
-
 // Whether this build (tests and tools alike) runs under AddressSanitizer
 // (scripts/sanitize.sh). Its shadow memory takes terabytes of address
 // space, and everything runs several times slower: tests that limit
 // address space skip under it, and the heaviest randomised comparisons
 // take a share of their rays (the ordinary build, also run by CI, takes
 // them all).
+#include <cstdint>
 
 namespace meshtrace::test {
 
