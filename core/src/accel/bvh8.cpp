@@ -282,4 +282,16 @@ Bvh8 collapseToBvh8(Bvh binary) {
   return out;
 }
 
+std::vector<Bvh8Leaf> leavesOf(const Bvh8& tree) {
+  std::vector<Bvh8Leaf> leaves;
+  if (tree.nodes.empty()) {
+    if (tree.rootCount > 0) leaves.push_back({0, tree.rootCount});
+    return leaves;
+  }
+  for (const Bvh8Node& node : tree.nodes)
+    for (int i = 0; i < kBvhWidth; ++i)
+      if (node.count[i] != 0) leaves.push_back({node.first[i], node.count[i]});
+  return leaves;
+}
+
 }  // namespace meshtrace

@@ -53,6 +53,14 @@ struct Bvh8 {
   }
 };
 
+// A leaf of a Bvh8: its primitives are order[first, first + count) (in a
+// triangle BVH, whose order the blocks replace, `first` places its block).
+struct Bvh8Leaf {
+  std::uint32_t first, count;
+};
+// Every leaf of `tree`, node by node (the root, when the tree is one leaf).
+std::vector<Bvh8Leaf> leavesOf(const Bvh8& tree);
+
 // Keeps the binary tree's leaves and makes 8-wide nodes of the binary nodes
 // whose boxes' areas sum to the least (bvh8.cpp), each node taking the
 // leaves and 8-wide nodes below it as its up to eight children.

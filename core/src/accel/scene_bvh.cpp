@@ -41,7 +41,7 @@ std::size_t buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
   const std::size_t copies = binary.copiesLeftOut;
   out.tree = collapseToBvh8(std::move(binary));
   out.frame = blockFrame(out.triangles.bounds());
-  out.blocks = makeTriangleBlocks(out.triangles, out.frame, out.tree);
+  out.blocks = TriangleBlocks(out.triangles, out.frame, out.tree);
   return copies;
 }
 
@@ -79,7 +79,7 @@ class SoleMesh {
     vertices_ = first.mesh->vertices().data();
     sceneIndex_ = first.sceneIndex;
   }
-  const SoleMesh& of(const TriangleBlock4&) const { return *this; }
+  const SoleMesh& of(TriangleBlock) const { return *this; }
   const TriangleIndices* row(std::uint32_t id) const { return rows_ + id; }
   const Vec3* vertices() const { return vertices_; }
   PrimitiveRef ref(std::uint32_t id) const { return {ObjectKind::Mesh, sceneIndex_, id}; }
@@ -93,10 +93,10 @@ class SoleMesh {
 class ManyMeshes {
  public:
   explicit ManyMeshes(const TriangleSet& set) : set_(set) {}
-  BlockMesh of(const TriangleBlock4& block) const {
-    const TriangleSet::Member m = set_[block.id[0]];
+  BlockMesh of(TriangleBlock block) const {
+    const TriangleSet::Member m = set_[block.id(0)];
     return {m.mesh->triangles().data(), m.mesh->vertices().data(), m.sceneIndex,
-            block.id[0] - m.triangle};
+            block.id(0) - m.triangle};
   }
 
  private:
@@ -117,25 +117,26 @@ template <typename Visit>
 // mesh, a cache miss on a large mesh; asking for them before the filter
 // runs overlaps that wait with it.
 template <HitKind kKind, typename Mesh>
-BlockRay::Lanes filterLanes(const BlockRay& ray, const TriangleBlock4& block, std::uint32_t n,
-                            const Mesh& mesh, double tMin, double tMax, Counters& counters) {
-  for (std::uint32_t k = 0; k < n; ++k) prefetchLine(mesh.row(block.id[k]));
+BlockRay::Lanes filterLanes(const BlockRay& ray, TriangleBlock block, const Mesh& mesh, double tMin,
+                            double tMax, Counters& counters) {
+  const int n = block.count();
+  for (int k = 0; k < n; ++k) prefetchLine(mesh.row(block.id(k)));
   BlockRay::Lanes lanes{0, 0};
   if constexpr (kKind == HitKind::Any)
-    lanes = ray.classify(block, static_cast<int>(n), tMin, tMax);
+    lanes = ray.classify(block, tMin, tMax);
   else
-    lanes.candidates = ray.candidates(block, static_cast<int>(n), tMin, tMax);
-  counters.triangleTests += n - laneCount(lanes.candidates);
+    lanes.candidates = ray.candidates(block, tMin, tMax);
+  counters.triangleTests += static_cast<std::uint64_t>(n - laneCount(lanes.candidates));
   return lanes;
 }
 
 // Whether an any-hit search takes one of the certain lanes as its blocker
 // without the exact test: any of them but the triangle the ray leaves.
 template <typename Search, typename Mesh>
-bool takesCertainLane(Search& search, const TriangleBlock4& block, int certain, const Mesh& mesh) {
+bool takesCertainLane(Search& search, TriangleBlock block, int certain, const Mesh& mesh) {
   if constexpr (Search::kKind == HitKind::Any) {
     for (; certain; certain &= certain - 1) {
-      const PrimitiveRef t = mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(certain))]);
+      const PrimitiveRef t = mesh.ref(block.id(__builtin_ctz(static_cast<unsigned>(certain))));
       if (search.certainTriangle(t.object, t.triangle)) return true;
     }
   }
@@ -145,9 +146,9 @@ bool takesCertainLane(Search& search, const TriangleBlock4& block, int certain, 
 // Calls exact(triangle) with the PrimitiveRef of each lane in `lanes` until
 // one call returns true.
 template <typename Mesh, typename Exact>
-bool forEachLane(const TriangleBlock4& block, int lanes, const Mesh& mesh, Exact&& exact) {
+bool forEachLane(TriangleBlock block, int lanes, const Mesh& mesh, Exact&& exact) {
   for (; lanes; lanes &= lanes - 1)
-    if (exact(mesh.ref(block.id[__builtin_ctz(static_cast<unsigned>(lanes))]))) return true;
+    if (exact(mesh.ref(block.id(__builtin_ctz(static_cast<unsigned>(lanes)))))) return true;
   return false;
 }
 
@@ -158,9 +159,9 @@ bool forEachLane(const TriangleBlock4& block, int lanes, const Mesh& mesh, Exact
 // triangles); any-hit packets do not, since nearly all their candidates are
 // lanes the exact test rejects.
 template <typename Mesh>
-void prefetchVertices(const TriangleBlock4& block, int lanes, const Mesh& mesh) {
+void prefetchVertices(TriangleBlock block, int lanes, const Mesh& mesh) {
   for (; lanes; lanes &= lanes - 1) {
-    const TriangleIndices& row = *mesh.row(block.id[__builtin_ctz(static_cast<unsigned>(lanes))]);
+    const TriangleIndices& row = *mesh.row(block.id(__builtin_ctz(static_cast<unsigned>(lanes))));
     for (int c = 0; c < 3; ++c) prefetchObject(mesh.vertices()[row[c]]);
   }
 }
@@ -169,12 +170,11 @@ void prefetchVertices(const TriangleBlock4& block, int lanes, const Mesh& mesh) 
 // any-hit search, then the exact test of each candidate, as above.
 template <typename Search, typename Locate>
 [[gnu::always_inline]] inline bool searchBlock(Search& search, const BlockRay& ray,
-                                               const TriangleBlock4& block, std::uint32_t n,
-                                               const Locate& locate, double tMin,
-                                               Counters& counters) {
+                                               TriangleBlock block, const Locate& locate,
+                                               double tMin, Counters& counters) {
   const auto& mesh = locate.of(block);
   const BlockRay::Lanes lanes =
-      filterLanes<Search::kKind>(ray, block, n, mesh, tMin, search.limit(), counters);
+      filterLanes<Search::kKind>(ray, block, mesh, tMin, search.limit(), counters);
   if (takesCertainLane(search, block, lanes.certain, mesh)) return true;
   return forEachLane(block, lanes.candidates, mesh,
                      [&](const PrimitiveRef& t) { return search.triangle(t.object, t.triangle); });
@@ -183,7 +183,10 @@ template <typename Search, typename Locate>
 // What the triangle BVH's traversals ask for ahead: a leaf's data is its
 // block.
 auto childPrefetch(const MeshBvh& bvh) {
-  const auto block = [blocks = bvh.blocks.data()](std::uint32_t b) { prefetchObject(blocks[b]); };
+  const auto block = [&blocks = bvh.blocks](std::uint32_t first, std::uint32_t count) {
+    const TriangleBlock b = blocks.block(first, count);
+    prefetchBytes(b.data(), b.bytes());
+  };
   return bvh8::PrefetchChildren<decltype(block)>(bvh.prefetch, block);
 }
 
@@ -329,8 +332,8 @@ bool SceneBvh::traceBounded(const SlabRay& ray, Search& search, Counters& counte
     }
     const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
       LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
-      const auto blockLeaf = [&](std::uint32_t block, std::uint32_t n) MESHTRACE_INLINE_LEAF {
-        return searchBlock(search, blockRay.get(), meshBvh_.blocks[block], n, locate, tMin,
+      const auto blockLeaf = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
+        return searchBlock(search, blockRay.get(), meshBvh_.blocks.block(first, n), locate, tMin,
                            counters);
       };
       return traverse<kKind>(meshBvh_.tree, ray, tMin, search.limit(), visits, blockLeaf,
@@ -398,9 +401,9 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
     }
     const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
       PacketBlockRays blockRay(searches, meshBvh_.frame);
-      const auto blockLeaf = [&](std::uint32_t index, std::uint32_t n,
+      const auto blockLeaf = [&](std::uint32_t first, std::uint32_t n,
                                  std::uint32_t meeting) MESHTRACE_INLINE_LEAF {
-        const TriangleBlock4& block = meshBvh_.blocks[index];
+        const TriangleBlock block = meshBvh_.blocks.block(first, n);
         const auto& mesh = locate.of(block);
         // Every ray's filter first, then the exact tests.
         BlockRay::Lanes lanes[kPacketSize] = {};
@@ -408,8 +411,8 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
         std::uint32_t now = 0;
         for (int r = 0; r < kPacketSize; ++r) {
           if (!(meeting >> r & 1)) continue;
-          lanes[r] = filterLanes<kKind>(blockRay.get(r), block, n, mesh, tMin[r],
-                                        searches[r].limit(), counters);
+          lanes[r] = filterLanes<kKind>(blockRay.get(r), block, mesh, tMin[r], searches[r].limit(),
+                                        counters);
           any |= lanes[r].candidates;
           if (takesCertainLane(searches[r], block, lanes[r].certain, mesh)) {
             now |= 1u << r;

@@ -31,15 +31,13 @@ class PrimitiveQuery;
 // are triangle blocks.
 struct MeshBvh {
   TriangleSet triangles;  // what a block lane's id refers to
-  Bvh8 tree;              // a leaf's `first` is its block index
-  BuildVector<TriangleBlock4> blocks;
+  Bvh8 tree;              // a leaf's block is blocks.block(first, count)
+  TriangleBlocks blocks;
   BlockFrame frame;
   bool prefetch = false;  // whether traversals fetch children ahead
 
   bool empty() const { return blocks.empty(); }
-  std::size_t bytes() const {
-    return tree.nodes.size() * sizeof(Bvh8Node) + blocks.size() * sizeof(TriangleBlock4);
-  }
+  std::size_t bytes() const { return tree.nodes.size() * sizeof(Bvh8Node) + blocks.bytes(); }
 };
 
 class SceneBvh {

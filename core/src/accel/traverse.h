@@ -48,7 +48,7 @@ struct NoPrefetch {
   void operator()(const Bvh8Node*, const Bvh8Node&, unsigned) const {}
 };
 
-// Asks for the nodes, and through leafData(first) the leaf data, of the
+// Asks for the nodes, and through leafData(first, count) the leaf data, of the
 // children in `mask`, before the traversal branches on them: on a tree far
 // larger than the caches, each visit otherwise waits for memory in turn, and
 // a mispredicted branch delays the next load further. Whether it pays is a
@@ -65,7 +65,7 @@ class PrefetchChildren {
     for (; mask; mask &= mask - 1) {
       const int i = __builtin_ctz(mask);
       if (node.count[i] != 0)
-        leafData_(node.first[i]);
+        leafData_(node.first[i], node.count[i]);
       else
         prefetchObject(nodes[node.first[i]]);
     }

@@ -3,8 +3,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "accel/triangle_set.h"
 #include "meshtrace/geometry/mesh.h"
@@ -44,59 +47,92 @@ int cornerOppositeLongestEdge(const std::vector<Vec3>& v, const TriangleIndices&
   return longest;
 }
 
+// The words a block of `count` triangles takes, padded to a multiple of
+// kBlockAlignWords.
+constexpr std::size_t paddedWords(std::size_t count) {
+  constexpr std::size_t kAlign = TriangleBlocks::kBlockAlignWords;
+  return (TriangleBlock::kWordsPerTriangle * count + kAlign - 1) / kAlign * kAlign;
+}
+
+// The filter's last load (array 8, from word 9 count) reaches kBlockLanes -
+// count words past the block's data: into its padding, never into the next
+// block, whatever the count.
+static_assert([] {
+  for (std::size_t count = 1; count <= kBlockLanes; ++count)
+    if (9 * count + kBlockLanes > paddedWords(count)) return false;
+  return true;
+}());
+
 }  // namespace
 
-BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
-                                               const BlockFrame& frame, Bvh8& tree) {
-  struct Leaf {
-    std::uint32_t first, count;
+TriangleBlocks::TriangleBlocks(const TriangleSet& triangles, const BlockFrame& frame, Bvh8& tree) {
+  for (const Bvh8Leaf& leaf : leavesOf(tree))
+    if (leaf.count > kBlockLanes)
+      throw std::length_error("a triangle BVH leaf of " + std::to_string(leaf.count) +
+                              " triangles, over a block's " + std::to_string(kBlockLanes));
+  // The blocks go in the order the nodes list their leaves, not in the
+  // tree's order, and each leaf's `first` moves to its block's place: the
+  // leaf children of one node, which a ray meeting the node tests
+  // together, then lie side by side, where the tree's order would put the
+  // triangles of the node's other subtrees between them.
+  struct Move {
+    std::uint32_t from, to, count;
   };
-  std::vector<Leaf> leaves;
+  constexpr std::size_t kAlign = TriangleBlocks::kBlockAlignWords;
+  std::vector<Move> moves;
+  std::size_t packed = 0;  // words
+  const auto place = [&](std::uint32_t& first, std::uint32_t count) {
+    moves.push_back({first, static_cast<std::uint32_t>(packed / kAlign), count});
+    first = static_cast<std::uint32_t>(packed / kAlign);
+    packed += paddedWords(count);
+  };
   if (tree.nodes.empty()) {
-    if (tree.rootCount > 0) leaves.push_back({0, tree.rootCount});
-  } else {
-    for (Bvh8Node& node : tree.nodes)
-      for (int i = 0; i < kBvhWidth; ++i) {
-        if (node.count[i] == 0) continue;
-        leaves.push_back({node.first[i], node.count[i]});
-        node.first[i] = static_cast<std::uint32_t>(leaves.size() - 1);
-      }
+    std::uint32_t root = 0;
+    if (tree.rootCount > 0) place(root, tree.rootCount);
   }
-  BuildVector<TriangleBlock4> blocks(leaves.size());  // every block is assigned below
+  for (Bvh8Node& node : tree.nodes)
+    for (int i = 0; i < kBvhWidth; ++i)
+      if (node.count[i] != 0) place(node.first[i], node.count[i]);
+  units_.resize(packed / kAlign);  // written below, the padding as zeros
   const auto local = [&](const Vec3& p) { return (p - frame.center) * frame.scale; };
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 4096),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, moves.size(), 4096),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                        TriangleBlock4& b = blocks[k];
-                        b = {};
-                        for (int lane = 0; lane < 4; ++lane) {
-                          if (static_cast<std::uint32_t>(lane) >= leaves[k].count) {
-                            b.id[lane] = kNoTriangle;
-                            continue;
-                          }
-                          const std::uint32_t t = tree.order[leaves[k].first + lane];
+                        // Not a structured binding: Clang 14 cannot capture
+                        // one in the lambda below.
+                        const std::uint32_t from = moves[k].from, count = moves[k].count;
+                        const std::uint32_t to = moves[k].to;
+                        std::uint32_t* words = this->words() + kAlign * to;
+                        std::fill(words + TriangleBlock::kWordsPerTriangle * count,
+                                  words + paddedWords(count), 0u);
+                        // Array `array` (after the ids), lane `lane` of this block.
+                        const auto put = [&](std::size_t array, std::uint32_t lane, double x) {
+                          words[(array + 1) * count + lane] =
+                              std::bit_cast<std::uint32_t>(static_cast<float>(x));
+                        };
+                        for (std::uint32_t lane = 0; lane < count; ++lane) {
+                          const std::uint32_t t = tree.order[from + lane];
                           const TriangleSet::Member member = triangles[t];
                           const auto& v = member.mesh->vertices();
                           const TriangleIndices& idx = member.indices();
-                          const int first = cornerOppositeLongestEdge(v, idx);
-                          const Vec3& v0 = v[idx[first]];
-                          const Vec3& v1 = v[idx[(first + 1) % 3]];
-                          const Vec3& v2 = v[idx[(first + 2) % 3]];
+                          const int corner = cornerOppositeLongestEdge(v, idx);
+                          const Vec3& v0 = v[idx[corner]];
+                          const Vec3& v1 = v[idx[(corner + 1) % 3]];
+                          const Vec3& v2 = v[idx[(corner + 2) % 3]];
                           const Vec3 a = local(v0);
                           const Vec3 e1 = (v1 - v0) * frame.scale;
                           const Vec3 e2 = (v2 - v0) * frame.scale;
                           for (int axis = 0; axis < 3; ++axis) {
-                            b.v0[axis][lane] = static_cast<float>(a[axis]);
-                            b.e1[axis][lane] = static_cast<float>(e1[axis]);
-                            b.e2[axis][lane] = static_cast<float>(e2[axis]);
+                            put(axis, lane, a[axis]);
+                            put(3 + axis, lane, e1[axis]);
+                            put(6 + axis, lane, e2[axis]);
                           }
-                          b.id[lane] = t;
+                          words[lane] = t;
                         }
                       }
                     });
   tree.order.clear();
   tree.order.shrink_to_fit();
-  return blocks;
 }
 
 // The filter's error bounds are in local lengths, as multiples of float's

@@ -12,6 +12,7 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -34,21 +35,74 @@ struct BlockFrame {
   double worldSize = 0.0;  // |center| + half extent, largest component
 };
 
-// 160 bytes. Unused lanes have id kNoTriangle and are never reported.
-struct alignas(16) TriangleBlock4 {
-  float v0[3][4];  // [axis][lane], local coordinates
-  float e1[3][4];  // v1 - v0 and v2 - v0, each rounded once from double
-  float e2[3][4];
-  std::uint32_t id[4];  // triangle id in the TriangleSet the blocks were made from
-};
-static_assert(sizeof(TriangleBlock4) == 160);
-inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+// The most triangles a block holds: one SSE lane each.
+inline constexpr std::uint32_t kBlockLanes = 4;
 
-// Replaces each leaf of `tree` (at most four triangles of `triangles`, from
-// tree.order) by one block: afterwards a leaf's `first` is its block index,
-// and tree.order is released. A lane's id is its triangle's id in the set.
-BuildVector<TriangleBlock4> makeTriangleBlocks(const TriangleSet& triangles,
-                                               const BlockFrame& frame, Bvh8& tree);
+// One leaf's block, as TriangleBlocks stores it: for its n triangles (1 to
+// 4), their n ids in the TriangleSet the blocks were made from, then nine
+// float arrays of n (v0, e1, e2 in local coordinates, x, y and z each, the
+// edges v1 - v0 and v2 - v0 rounded once from double). No lane is kept
+// empty: a leaf of three triangles takes 120 bytes, not a four-lane block's
+// 160, and many of a BVH's leaves hold fewer than four.
+class TriangleBlock {
+ public:
+  static constexpr std::size_t kWordsPerTriangle = 10;
+
+  TriangleBlock(const std::uint32_t* words, int count) : words_(words), count_(count) {}
+
+  int count() const { return count_; }
+  std::uint32_t id(int lane) const { return words_[lane]; }
+  // Four lanes of array k (0-2: v0, 3-5: e1, 6-8: e2). Lanes past count()
+  // hold what follows the array in its block, the next arrays or the zeros
+  // that pad the block (TriangleBlocks): never an id, which as a float
+  // would be a denormal. The filter masks them off.
+  __m128 lanes(int k) const {
+    return _mm_loadu_ps(reinterpret_cast<const float*>(words_ + (k + 1) * count_));
+  }
+  const void* data() const { return words_; }
+  std::size_t bytes() const { return 4 * kWordsPerTriangle * static_cast<std::size_t>(count_); }
+
+ private:
+  const std::uint32_t* words_;
+  int count_;
+};
+
+// The blocks of every leaf of a triangle BVH, packed in one buffer, each
+// starting on a 32-byte boundary: a block of four then has every array on
+// 16 bytes, and the filter's loads stay inside their block for any count.
+// (Blocks packed tighter made the filter slower than the bytes saved
+// repay: docs/perf-log/2026-11-26-packed-blocks.md.) A leaf's block is
+// found with no table, at kBlockAlignWords times the leaf's `first`, which
+// the constructor moves from the leaf's place in the tree's order to its
+// block's.
+class TriangleBlocks {
+ public:
+  static constexpr std::size_t kBlockAlignWords = 8;
+
+  TriangleBlocks() = default;
+  // The blocks of the leaves of `tree`, at most four triangles of
+  // `triangles` each (listed in tree.order, which is released). Throws
+  // std::length_error for a larger leaf.
+  TriangleBlocks(const TriangleSet& triangles, const BlockFrame& frame, Bvh8& tree);
+
+  TriangleBlock block(std::uint32_t first, std::uint32_t count) const {
+    return {words() + kBlockAlignWords * first, static_cast<int>(count)};
+  }
+  bool empty() const { return units_.empty(); }
+  std::size_t bytes() const { return units_.size() * sizeof(Unit); }
+
+ private:
+  struct alignas(4 * kBlockAlignWords) Unit {
+    std::uint32_t words[kBlockAlignWords];
+  };
+  const std::uint32_t* words() const {
+    return reinterpret_cast<const std::uint32_t*>(units_.data());
+  }
+  std::uint32_t* words() { return reinterpret_cast<std::uint32_t*>(units_.data()); }
+
+  BuildVector<Unit> units_;
+};
+
 // The frame that fits `box` (the set's bounds) in [-1, 1]^3.
 BlockFrame blockFrame(const Aabb& box);
 
@@ -58,9 +112,9 @@ class BlockRay {
   BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel);
 
   // Bit i set if lane i of `block` may hold a hit at tMin <= t <= tMax
-  // (world distances) for the exact kernel; lanes past `count` are clear.
-  int candidates(const TriangleBlock4& block, int count, double tMin, double tMax) const {
-    return test<false>(block, count, tMin, tMax).candidates;
+  // (world distances) for the exact kernel; lanes past its count are clear.
+  int candidates(TriangleBlock block, double tMin, double tMax) const {
+    return test<false>(block, tMin, tMax).candidates;
   }
   // candidates, and beside them the lanes the exact kernel is sure to hit at
   // tMin < t < tMax (a subset): an any-hit search needs no exact test of
@@ -68,13 +122,13 @@ class BlockRay {
   struct Lanes {
     int candidates, certain;
   };
-  Lanes classify(const TriangleBlock4& block, int count, double tMin, double tMax) const {
-    return test<true>(block, count, tMin, tMax);
+  Lanes classify(TriangleBlock block, double tMin, double tMax) const {
+    return test<true>(block, tMin, tMax);
   }
 
  private:
   template <bool kCertain>
-  Lanes test(const TriangleBlock4& block, int count, double tMin, double tMax) const;
+  Lanes test(TriangleBlock block, double tMin, double tMax) const;
 
   __m128 origin_[3], direction_[3];
   float originError_ = 0.0f;    // bound on the error of o' - v0 (see the .cpp)
@@ -106,9 +160,8 @@ class BlockRay {
 //   deltaT det < 3 R (2 gamma_3 det + 8 gamma_5 R^2 (3 + 1/D)),
 // which a certain lane's t det must exceed as well.
 template <bool kCertain>
-inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double tMin,
-                                      double tMax) const {
-  const int valid = (1 << count) - 1;
+inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax) const {
+  const int valid = (1 << b.count()) - 1;
   if (!filter_) return {valid, 0};
   constexpr float u = 0x1p-24f;
   const __m128 signBit = _mm_set1_ps(-0.0f);
@@ -120,9 +173,9 @@ inline BlockRay::Lanes BlockRay::test(const TriangleBlock4& b, int count, double
 
   __m128 s[3], e1[3], e2[3];
   for (int a = 0; a < 3; ++a) {
-    s[a] = sub(origin_[a], _mm_load_ps(b.v0[a]));
-    e1[a] = _mm_load_ps(b.e1[a]);
-    e2[a] = _mm_load_ps(b.e2[a]);
+    s[a] = sub(origin_[a], b.lanes(a));
+    e1[a] = b.lanes(3 + a);
+    e2[a] = b.lanes(6 + a);
   }
   const __m128* d = direction_;
   const __m128 p0 = sub(mul(d[1], e2[2]), mul(d[2], e2[1]));

@@ -13,14 +13,28 @@ inline void prefetchLine(const void* p) {
   asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
 }
 
+inline constexpr std::size_t kCacheLine = 64;
+
+// The lines at p, p + 64, ... below p + bytes: all of them when p starts a
+// line.
+inline void prefetchLinesFrom(const char* p, std::size_t bytes) {
+  for (std::size_t offset = 0; offset < bytes; offset += kCacheLine) prefetchLine(p + offset);
+}
+
+// Every cache line of the `bytes` (at least 1) from `data`.
+inline void prefetchBytes(const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  prefetchLinesFrom(p, bytes);
+  prefetchLine(p + bytes - 1);  // bytes not starting a line may reach into one more
+}
+
 // Every cache line of `object`.
 template <typename T>
 inline void prefetchObject(const T& object) {
-  constexpr std::size_t kLine = 64;
-  const char* p = reinterpret_cast<const char*>(&object);
-  for (std::size_t offset = 0; offset < sizeof(T); offset += kLine) prefetchLine(p + offset);
-  // An object not aligned to a line may reach into one more.
-  if constexpr (alignof(T) < kLine) prefetchLine(p + sizeof(T) - 1);
+  if constexpr (alignof(T) >= kCacheLine)
+    prefetchLinesFrom(reinterpret_cast<const char*>(&object), sizeof(T));
+  else
+    prefetchBytes(&object, sizeof(T));
 }
 
 }  // namespace meshtrace

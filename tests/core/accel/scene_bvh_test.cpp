@@ -94,12 +94,14 @@ TEST(SceneBvh, EachTriangleBlockHoldsOneMesh) {
   const MeshBvh& shared = bvh.meshBvh();
   ASSERT_EQ(shared.triangles.meshCount(), 3u);
   std::size_t lanes = 0, mixed = 0;
-  for (const TriangleBlock4& block : shared.blocks)
-    for (int lane = 0; lane < 4 && block.id[lane] != kNoTriangle; ++lane) {
+  for (const auto& [first, count] : leavesOf(shared.tree)) {
+    const TriangleBlock block = shared.blocks.block(first, count);
+    for (int lane = 0; lane < block.count(); ++lane) {
       ++lanes;
       mixed +=
-          shared.triangles[block.id[lane]].sceneIndex != shared.triangles[block.id[0]].sceneIndex;
+          shared.triangles[block.id(lane)].sceneIndex != shared.triangles[block.id(0)].sceneIndex;
     }
+  }
   EXPECT_EQ(lanes, shared.triangles.size());
   EXPECT_EQ(mixed, 0u);
 }

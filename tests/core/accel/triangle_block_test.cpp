@@ -20,8 +20,8 @@ struct Blocks {
   Mesh mesh;
   BlockFrame frame;
   Bvh8 tree;
-  BuildVector<TriangleBlock4> blocks;
-  std::vector<int> counts;  // valid lanes per block
+  TriangleBlocks store;
+  std::vector<TriangleBlock> blocks;  // one per leaf of the tree
 };
 
 Blocks makeBlocks(MeshData data) {
@@ -36,12 +36,9 @@ Blocks makeBlocks(MeshData data) {
   TriangleSet set;
   set.add(b.mesh, 0);
   b.frame = blockFrame(set.bounds());
-  b.blocks = makeTriangleBlocks(set, b.frame, b.tree);
-  for (const TriangleBlock4& block : b.blocks) {
-    int n = 0;
-    while (n < 4 && block.id[n] != kNoTriangle) ++n;
-    b.counts.push_back(n);
-  }
+  b.store = TriangleBlocks(set, b.frame, b.tree);
+  for (const auto& [first, count] : leavesOf(b.tree))
+    b.blocks.push_back(b.store.block(first, count));
   return b;
 }
 
@@ -96,23 +93,21 @@ FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::u
     const Ray ray = aimedRay(b.mesh, rng);
     const BlockRay blockRay(ray, b.frame, kernel);
     const TriangleRay exact(ray, kernel);
-    for (std::size_t k = 0; k < b.blocks.size(); ++k) {
-      const TriangleBlock4& block = b.blocks[k];
-      const int mask = blockRay.candidates(block, b.counts[k], 0.0, kInfinity);
-      c.lanes += b.counts[k];
-      for (int lane = 0; lane < b.counts[k]; ++lane) {
+    for (const TriangleBlock& block : b.blocks) {
+      const int mask = blockRay.candidates(block, 0.0, kInfinity);
+      c.lanes += block.count();
+      for (int lane = 0; lane < block.count(); ++lane) {
         const bool passed = (mask >> lane) & 1;
         c.candidates += passed;
-        const auto& t = b.mesh.triangles()[block.id[lane]];
+        const auto& t = b.mesh.triangles()[block.id(lane)];
         TriangleHit hit;
         if (!exact.intersect(v[t[0]], v[t[1]], v[t[2]], 0.0, kInfinity, hit)) continue;
         ++c.hits;
-        const bool atHit = (blockRay.candidates(block, b.counts[k], 0.0, hit.t) >> lane) & 1;
-        const bool fromBelow =
-            (blockRay.candidates(block, b.counts[k], hit.t * 0.999, kInfinity) >> lane) & 1;
+        const bool atHit = (blockRay.candidates(block, 0.0, hit.t) >> lane) & 1;
+        const bool fromBelow = (blockRay.candidates(block, hit.t * 0.999, kInfinity) >> lane) & 1;
         if (!passed || !atHit || !fromBelow) ++c.dropped;
       }
-      EXPECT_EQ(mask >> b.counts[k], 0) << "a lane past the block's triangles was reported";
+      EXPECT_EQ(mask >> block.count(), 0) << "a lane past the block's triangles was reported";
     }
   }
   return c;
@@ -186,10 +181,10 @@ TEST(TriangleBlockFilter, DropsTheTriangleBehindTheOrigin) {
     const Vec3 d = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
     const BlockRay blockRay({Vec3(0.0), d}, b.frame, {});
     const TriangleRay backward({Vec3(0.0), -d}, {});
-    for (std::size_t k = 0; k < b.blocks.size(); ++k) {
-      const int mask = blockRay.candidates(b.blocks[k], b.counts[k], 0.0, kInfinity);
-      for (int lane = 0; lane < b.counts[k]; ++lane) {
-        const auto& t = b.mesh.triangles()[b.blocks[k].id[lane]];
+    for (const TriangleBlock& block : b.blocks) {
+      const int mask = blockRay.candidates(block, 0.0, kInfinity);
+      for (int lane = 0; lane < block.count(); ++lane) {
+        const auto& t = b.mesh.triangles()[block.id(lane)];
         TriangleHit hit;
         if (!backward.intersect(v[t[0]], v[t[1]], v[t[2]], 0.0, kInfinity, hit)) continue;
         ++behind;
@@ -220,7 +215,7 @@ TEST(TriangleBlockFilter, DropsTheSliverBehindTheOrigin) {
     const Vec3 p = (1.0 - beta - gamma) * v[0] + beta * v[1] + gamma * v[2];
     Vec3 d = glm::normalize(Vec3(-0.1 - u(rng), u(rng) - 0.5, u(rng) - 0.5));
     const Ray ray{p + (0.01 + 0.09 * u(rng)) * d, d};
-    passed += BlockRay(ray, b.frame, {}).candidates(b.blocks[0], b.counts[0], 0.0, kInfinity) & 1;
+    passed += BlockRay(ray, b.frame, {}).candidates(b.blocks[0], 0.0, kInfinity) & 1;
   }
   EXPECT_EQ(passed, 0);
 }
@@ -254,15 +249,14 @@ CertainCount checkCertain(const Blocks& b, TriangleKernel kernel, int rays, std:
     const Ray ray = r % 2 ? aimedRay(b.mesh, rng) : nearSurfaceRay(b.mesh, rng);
     const BlockRay blockRay(ray, b.frame, kernel);
     const TriangleRay exact(ray, kernel);
-    for (std::size_t k = 0; k < b.blocks.size(); ++k) {
-      const TriangleBlock4& block = b.blocks[k];
+    for (const TriangleBlock& block : b.blocks) {
       const auto certainIn = [&](int lane, double tMin, double tMax) {
-        const BlockRay::Lanes lanes = blockRay.classify(block, b.counts[k], tMin, tMax);
+        const BlockRay::Lanes lanes = blockRay.classify(block, tMin, tMax);
         EXPECT_EQ(lanes.certain & ~lanes.candidates, 0) << "a certain lane is no candidate";
         return (lanes.certain >> lane & 1) != 0;
       };
-      for (int lane = 0; lane < b.counts[k]; ++lane) {
-        const auto& t = b.mesh.triangles()[block.id[lane]];
+      for (int lane = 0; lane < block.count(); ++lane) {
+        const auto& t = b.mesh.triangles()[block.id(lane)];
         TriangleHit hit;
         const bool found = exact.intersect(v[t[0]], v[t[1]], v[t[2]], 0.0, kInfinity, hit);
         const double th = found ? hit.t : 1.0;
@@ -326,18 +320,68 @@ TEST(TriangleBlockFilter, AbsurdlyFarOriginPassesEveryLaneToTheExactKernel) {
   const Blocks b = makeBlocks(makeIcosphere(Vec3(0.0), 1.0, 1));
   const Ray ray{Vec3(1e30, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0)};
   const BlockRay blockRay(ray, b.frame, {});
-  for (std::size_t k = 0; k < b.blocks.size(); ++k)
-    EXPECT_EQ(blockRay.candidates(b.blocks[k], b.counts[k], 0.0, kInfinity),
-              (1 << b.counts[k]) - 1);
+  for (const TriangleBlock& block : b.blocks)
+    EXPECT_EQ(blockRay.candidates(block, 0.0, kInfinity), (1 << block.count()) - 1);
 }
 
 TEST(TriangleBlocks, HoldEveryTriangleOnceInItsLeaf) {
   const Blocks b = makeBlocks(makeTorus(Vec3(0.0), 1.0, 0.3, 24, 12));
   std::vector<int> seen(b.mesh.triangles().size(), 0);
-  for (std::size_t k = 0; k < b.blocks.size(); ++k)
-    for (int lane = 0; lane < b.counts[k]; ++lane) ++seen[b.blocks[k].id[lane]];
+  for (const TriangleBlock& block : b.blocks)
+    for (int lane = 0; lane < block.count(); ++lane) ++seen[block.id(lane)];
   for (std::size_t t = 0; t < seen.size(); ++t) EXPECT_EQ(seen[t], 1) << "triangle " << t;
   EXPECT_TRUE(b.tree.order.empty());
+}
+
+// A block of n triangles takes 40 n bytes, padded to 32, and no empty
+// lanes: each lane holds its triangle's corners (v0, v0 + e1, v0 + e2, the
+// corners in turn from one of them) to float precision, in blocks of every
+// count.
+TEST(TriangleBlocks, PackEachLeafWithoutEmptyLanes) {
+  for (const int segments : {5, 7, 24}) {
+    const Blocks b = makeBlocks(makeTorus(Vec3(0.5, -1.0, 2.0), 1.0, 0.3, segments, 3));
+    const auto& v = b.mesh.vertices();
+    std::size_t padded = 0;
+    int withCount[5] = {};
+    for (const TriangleBlock& block : b.blocks) {
+      padded += (40 * block.count() + 31) / 32 * 32;
+      ++withCount[block.count()];
+      alignas(16) float x[9][4];
+      for (int k = 0; k < 9; ++k) _mm_store_ps(x[k], block.lanes(k));
+      for (int lane = 0; lane < block.count(); ++lane) {
+        const auto& t = b.mesh.triangles()[block.id(lane)];
+        const auto local = [&](int k) { return Vec3(x[k][lane], x[k + 1][lane], x[k + 2][lane]); };
+        const Vec3 v0 = local(0) / b.frame.scale + b.frame.center;
+        const Vec3 stored[3] = {v0, v0 + local(3) / b.frame.scale, v0 + local(6) / b.frame.scale};
+        bool matched = false;
+        for (int turn = 0; turn < 3 && !matched; ++turn) {
+          matched = true;
+          for (int c = 0; c < 3; ++c)
+            matched = matched && glm::length(stored[c] - v[t[(turn + c) % 3]]) < 1e-6;
+        }
+        EXPECT_TRUE(matched) << "triangle " << block.id(lane);
+      }
+    }
+    EXPECT_GT(withCount[1] + withCount[2] + withCount[3], 0) << segments << " segments";
+    EXPECT_EQ(b.store.bytes(), padded);
+    EXPECT_LT(b.store.bytes(), 160 * b.blocks.size());
+  }
+}
+
+TEST(TriangleBlocks, RefuseALeafOfMoreThanFourTriangles) {
+  const Mesh mesh("eight.off", makeTorus(Vec3(0.0), 1.0, 0.3, 2, 2), Shading::Flat, Material{});
+  ASSERT_EQ(mesh.triangles().size(), 8u);
+  std::vector<Aabb> boxes;
+  for (const auto& t : mesh.triangles()) {
+    Aabb box;
+    for (auto k : t) box.extend(mesh.vertices()[k]);
+    boxes.push_back(box);
+  }
+  Bvh8 tree = collapseToBvh8(buildBvh(boxes, {.maxLeafSize = 8, .nodeCost = 1e9}));
+  ASSERT_EQ(tree.rootCount, 8u);
+  TriangleSet set;
+  set.add(mesh, 0);
+  EXPECT_THROW(TriangleBlocks(set, blockFrame(set.bounds()), tree), std::length_error);
 }
 
 }  // namespace
