@@ -67,6 +67,12 @@ void drawNormalsPanel(ViewerState& state, RenderDisplay&) {
     ImGui::Text("%.1f ms", check.ms);
   }
   ImGui::TextDisabled("Angle-weighted normals through OpenMesh's half-edges.");
+  // The figures' lines, as a region for --describe: their last digits are
+  // rounding noise that moves with any change to either side's arithmetic,
+  // so the snapshot tests read them as text, not as pixels.
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  // To the window's edge: a long line runs past the content region, clipped.
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   for (std::size_t i = 0; i < check.reports.size(); ++i) {
     const auto& r = check.reports[i];
     if (!r) continue;
@@ -83,6 +89,7 @@ void drawNormalsPanel(ViewerState& state, RenderDisplay&) {
     }
     ImGui::PopID();
   }
+  state.regions["normals_figures"] = {top.x, top.y, right, ImGui::GetCursorScreenPos().y};
 }
 
 }  // namespace meshtrace::viewer
