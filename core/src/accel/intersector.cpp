@@ -24,8 +24,9 @@ namespace {
 // two nodes (2 x 32) and its place in the leaf order (4). Collapsing to
 // 8-wide nodes keeps that tree (68) beside at most 9 bytes per binary node
 // (2 per triangle) and the 8-wide nodes (256 bytes per 8 triangles or
-// more); the triangle blocks (160 bytes per block of up to 4, 2 or more on
-// average) come once the binary tree is gone. 128 covers the largest stage
+// more); the triangle blocks (40 bytes a triangle, a block padded to 32:
+// 64 for a leaf of one) and the list of leaves being packed (20 bytes a
+// leaf) come once the binary tree is gone. 128 covers the largest stage
 // with a margin.
 constexpr std::uint64_t kBuildBytesPerTriangle = 128;
 // With several meshes each one's tree (68 per triangle) is kept until all
