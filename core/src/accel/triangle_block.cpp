@@ -54,12 +54,12 @@ constexpr std::size_t paddedWords(std::size_t count) {
   return (TriangleBlock::kWordsPerTriangle * count + kAlign - 1) / kAlign * kAlign;
 }
 
-// The filter's last load (array 8, from word 9 count) reaches kBlockLanes -
-// count words past the block's data: into its padding, never into the next
+// The filter's last load, four lanes of array 8, reaches past the block's
+// data by kBlockLanes - count words: into its padding, never into the next
 // block, whatever the count.
 static_assert([] {
   for (std::size_t count = 1; count <= kBlockLanes; ++count)
-    if (9 * count + kBlockLanes > paddedWords(count)) return false;
+    if (TriangleBlock::wordOf(8, count, kBlockLanes - 1) >= paddedWords(count)) return false;
   return true;
 }());
 
@@ -105,9 +105,8 @@ TriangleBlocks::TriangleBlocks(const TriangleSet& triangles, const BlockFrame& f
                         std::uint32_t* words = this->words() + kAlign * to;
                         std::fill(words + TriangleBlock::kWordsPerTriangle * count,
                                   words + paddedWords(count), 0u);
-                        // Array `array` (after the ids), lane `lane` of this block.
                         const auto put = [&](std::size_t array, std::uint32_t lane, double x) {
-                          words[(array + 1) * count + lane] =
+                          words[TriangleBlock::wordOf(array, count, lane)] =
                               std::bit_cast<std::uint32_t>(static_cast<float>(x));
                         };
                         for (std::uint32_t lane = 0; lane < count; ++lane) {

@@ -50,6 +50,13 @@ class TriangleBlock {
 
   TriangleBlock(const std::uint32_t* words, int count) : words_(words), count_(count) {}
 
+  // Where lane `lane` of float array `array` (0-8) lies in a block of
+  // `count` triangles, in words from its start: after the ids. The one
+  // statement of the layout, for the blocks' writer and their reader.
+  static constexpr std::size_t wordOf(std::size_t array, std::size_t count, std::size_t lane) {
+    return (array + 1) * count + lane;
+  }
+
   int count() const { return count_; }
   std::uint32_t id(int lane) const { return words_[lane]; }
   // Four lanes of array k (0-2: v0, 3-5: e1, 6-8: e2). Lanes past count()
@@ -57,7 +64,7 @@ class TriangleBlock {
   // that pad the block (TriangleBlocks): never an id, which as a float
   // would be a denormal. The filter masks them off.
   __m128 lanes(int k) const {
-    return _mm_loadu_ps(reinterpret_cast<const float*>(words_ + (k + 1) * count_));
+    return _mm_loadu_ps(reinterpret_cast<const float*>(words_ + wordOf(k, count_, 0)));
   }
   const void* data() const { return words_; }
   std::size_t bytes() const { return 4 * kWordsPerTriangle * static_cast<std::size_t>(count_); }
