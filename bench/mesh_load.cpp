@@ -45,14 +45,22 @@ void printMeshLoadTimes(const std::filesystem::path& off) {
   ply.replace_extension(".ply");
   // Float coordinates, as scanners and exporters write them.
   if (!std::filesystem::exists(ply)) writeBinaryPly(mesh, ply, PlyCoordinates::Float);
-  std::vector<double> offMs, plyMs, openMeshMs;
+  // OFF's numbers, as ASCII PLY.
+  auto asciiPly = off;
+  asciiPly.replace_filename(off.stem().string() + "-ascii.ply");
+  if (!std::filesystem::exists(asciiPly)) writeAsciiPly(mesh, asciiPly);
+  std::vector<double> offMs, plyMs, openMeshMs, asciiMs, asciiOpenMeshMs;
+  const std::size_t n = mesh.triangles.size();
   for (int round = 0; round < kRounds; ++round) {  // interleaved: all see the same load
-    offMs.push_back(loadMs(off, mesh.triangles.size()));
-    plyMs.push_back(loadMs(ply, mesh.triangles.size()));
-    // The reader binary PLY had before the core read it.
-    openMeshMs.push_back(loadMs(ply, mesh.triangles.size(), formats::readOpenMeshFile));
+    offMs.push_back(loadMs(off, n));
+    plyMs.push_back(loadMs(ply, n));
+    asciiMs.push_back(loadMs(asciiPly, n));
+    // The reader PLY had before the core read it.
+    openMeshMs.push_back(loadMs(ply, n, formats::readOpenMeshFile));
+    asciiOpenMeshMs.push_back(loadMs(asciiPly, n, formats::readOpenMeshFile));
   }
   const double a = median(offMs), b = median(plyMs), c = median(openMeshMs);
+  const double d = median(asciiMs), e = median(asciiOpenMeshMs);
   std::printf("\n### Loading %s: %zu triangles, median of %d loads\n\n", off.stem().c_str(),
               mesh.triangles.size(), kRounds);
   std::printf("| file | bytes | load ms | against OFF |\n|---|---|---|---|\n");
@@ -61,6 +69,9 @@ void printMeshLoadTimes(const std::filesystem::path& off) {
   const auto plyBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(ply));
   std::printf("| binary PLY (ours) | %ju | %.1f | %.2f |\n", plyBytes, b, b / a);
   std::printf("| binary PLY (OpenMesh) | %ju | %.1f | %.2f |\n", plyBytes, c, c / a);
+  const auto asciiBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(asciiPly));
+  std::printf("| ASCII PLY (ours) | %ju | %.1f | %.2f |\n", asciiBytes, d, d / a);
+  std::printf("| ASCII PLY (OpenMesh) | %ju | %.1f | %.2f |\n", asciiBytes, e, e / a);
 }
 
 }  // namespace meshtrace::bench

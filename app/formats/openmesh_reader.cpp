@@ -305,11 +305,11 @@ void registerOpenMeshFormats() {
   static std::once_flag once;
   std::call_once(once, [] {
     for (const char* extension : {".stl", ".om"}) registerMeshReader(extension, readOpenMeshFile);
-    // Binary PLY is read by the core's reader, streamed (and quicker than
-    // OpenMesh's generic properties); what it leaves, ASCII PLY above all,
-    // comes here.
+    // PLY is read by the core's reader, streamed (quicker than OpenMesh's
+    // generic properties, and in double from ASCII); the rare layouts it
+    // leaves come here.
     registerMeshReader(".ply", [](const std::filesystem::path& file, MemoryBudget& budget) {
-      if (std::optional<MeshData> mesh = readBinaryPly(file, budget)) return std::move(*mesh);
+      if (std::optional<MeshData> mesh = readPly(file, budget)) return std::move(*mesh);
       return readOpenMeshFile(file, budget);
     });
   });

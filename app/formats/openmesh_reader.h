@@ -1,8 +1,8 @@
 #pragma once
-// ASCII PLY (and the binary PLY the core's reader leaves), STL (ASCII and
-// binary) and OM meshes through OpenMesh's readers; OBJ, OFF and binary
-// PLY have readers of their own in the core. A library of its own, so that the core never depends
-// on OpenMesh: the tools link it and register its readers at start.
+// STL (ASCII and binary), OM and the PLY layouts the core's reader leaves
+// through OpenMesh's readers; OBJ, OFF and PLY have readers of their own
+// in the core. A library of its own, so that the core never depends on
+// OpenMesh: the tools link it and register its readers at start.
 #include <filesystem>
 
 #include "meshtrace/geometry/mesh.h"
@@ -11,8 +11,8 @@
 namespace meshtrace::formats {
 
 // Registers readOpenMeshFile for .stl and .om, and for .ply the
-// core's binary PLY reader (readBinaryPly), with readOpenMeshFile for the
-// PLY files it leaves (registerMeshReader); only the first call does, so
+// core's PLY reader (readPly), with readOpenMeshFile for the PLY files it
+// leaves (registerMeshReader); only the first call does, so
 // every loader may call it first.
 void registerOpenMeshFormats();
 

@@ -33,6 +33,14 @@ void appendPoint(std::string& out, const Vec3& p, const char* separator) {
   }
 }
 
+// The vertex and face lines of OFF and of ASCII PLY: "x y z", then
+// "3 a b c".
+void appendVerticesAndFaces(std::string& out, const MeshData& mesh) {
+  for (const Vec3& v : mesh.vertices) appendPoint(out, v, " ");
+  for (const auto& [a, b, c] : mesh.triangles)
+    out += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+}
+
 std::string objText(const MeshData& mesh) {
   std::string out;
   for (const Vec3& v : mesh.vertices) {
@@ -65,9 +73,17 @@ std::string binaryStl(const MeshData& mesh) {
 void writeOff(const MeshData& mesh, const std::filesystem::path& path) {
   std::string out = "OFF\n" + std::to_string(mesh.vertices.size()) + " " +
                     std::to_string(mesh.triangles.size()) + " 0\n";
-  for (const Vec3& v : mesh.vertices) appendPoint(out, v, " ");
-  for (const auto& [a, b, c] : mesh.triangles)
-    out += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+  appendVerticesAndFaces(out, mesh);
+  writeFileAtomically(path, out);
+}
+
+void writeAsciiPly(const MeshData& mesh, const std::filesystem::path& path) {
+  std::string out = "ply\nformat ascii 1.0\nelement vertex " +
+                    std::to_string(mesh.vertices.size()) +
+                    "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+                    std::to_string(mesh.triangles.size()) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+  appendVerticesAndFaces(out, mesh);
   writeFileAtomically(path, out);
 }
 

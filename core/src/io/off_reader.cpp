@@ -1,18 +1,16 @@
 #include "meshtrace/io/off_reader.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "io/element_lines.h"
 #include "io/element_problems.h"
 #include "io/file_source.h"
 #include "io/line_pieces.h"
 #include "io/mesh_arrays.h"
-#include "io/piece_pipeline.h"
 #include "io/text.h"
 #include "io/vertex_line.h"
 #include "meshtrace/geometry/polygon.h"
@@ -31,8 +29,8 @@ static_assert(kMaxOffBytes <= std::uintmax_t{1} << 32, "line offsets are held in
 constexpr std::uintmax_t kMinVertexBytes = 6;
 constexpr std::uintmax_t kMinFaceBytes = 8;
 
-// The body (the vertex and face lines after the header) streams through
-// text::streamPieces: counted and parsed in parallel, gathered in order.
+// The body (the vertex and face lines after the header) is read by
+// text::readElementLines: counted and parsed in parallel, gathered in order.
 
 class OffParser {
  public:
@@ -64,7 +62,6 @@ class OffParser {
     // Exact for a triangle mesh.
     mesh_arrays::growTriangles(mesh_, budget_, static_cast<std::size_t>(nf_), file_);
     readBody(pieces, std::move(first), headerLines);
-    if (error_) std::rethrow_exception(error_);
     if (elements_ < nv_ + nf_) {
       const bool vertex = elements_ < nv_;
       throw InputError::inFile(file_, "file ends at " + std::string(vertex ? "vertex " : "face ") +
@@ -77,18 +74,7 @@ class OffParser {
   }
 
  private:
-  struct Chunk : mesh_arrays::MeshChunk {
-    bool loneCr = false;        // text::hasLoneCr of its lines
-    std::int64_t elements = 0;  // its non-empty lines
-    std::int64_t firstElement = 0;
-    // Its non-empty lines, comments cut, as the count found them: the
-    // parse reads these instead of finding the lines a second time.
-    struct Line {
-      std::uint32_t begin, length;  // in text(); a piece never outgrows the file
-      std::uint32_t number;         // counted from the chunk's first line, from 1
-    };
-    std::vector<Line> nonEmpty;
-  };
+  using Chunk = text::ElementChunk;
 
   InputError nulError(std::size_t line) const {
     return InputError::atLine(file_, line, text::kNulByteMessage);
@@ -139,80 +125,15 @@ class OffParser {
   }
 
   void readBody(text::LinePieces& pieces, std::unique_ptr<Chunk> first, std::size_t lineBefore) {
-    std::int64_t elements = 0;
-    text::streamPieces(
-        pieces, std::move(first), count,
-        [&](Chunk& c) {
-          c.firstElement = elements;
-          elements += c.elements;
-          c.lineBefore = lineBefore;
-          lineBefore += c.lines;
+    elements_ = text::readElementLines(
+        pieces, std::move(first), lineBefore, nv_ + nf_, mesh_, budget_, file_,
+        [&](std::string_view line, std::int64_t e, std::size_t lineNumber, Chunk& c) {
+          if (e < nv_)
+            mesh_.vertices[static_cast<std::size_t>(e)] = vertexOf(line, e, lineNumber);
+          else
+            readFace(line, e - nv_, lineNumber, c);
         },
-        [&](Chunk& c) { parseChunk(c); },
-        [&](Chunk& c, std::atomic<bool>& done) {
-          gather(c, done);
-          c.triangles.clear();
-          c.polygons.clear();
-          c.error = nullptr;
-        });
-  }
-
-  static void count(Chunk& c) {
-    const std::string_view text = c.text();
-    c.loneCr = text::hasLoneCr(text);
-    text::LineReader lines(text, c.loneCr);
-    std::string_view line;
-    c.nonEmpty.clear();
-    while (lines.nextNonEmpty(line)) {
-      c.nonEmpty.push_back({static_cast<std::uint32_t>(line.data() - text.data()),
-                            static_cast<std::uint32_t>(line.size()),
-                            static_cast<std::uint32_t>(lines.lineNumber())});
-    }
-    c.elements = static_cast<std::int64_t>(c.nonEmpty.size());
-    c.lines = lines.lineNumber();
-  }
-
-  // In file order: the first error ends the reading.
-  void gather(Chunk& c, std::atomic<bool>& done) {
-    if (done) return;
-    if (c.error) {
-      error_ = c.error;
-      done = true;
-      return;
-    }
-    elements_ = std::min(c.firstElement + c.elements, nv_ + nf_);
-    try {
-      // The chunk numbered its faces from its first.
-      mesh_arrays::appendTriangles(
-          mesh_, budget_, c,
-          static_cast<std::uint32_t>(std::max<std::int64_t>(0, c.firstElement - nv_)), file_);
-    } catch (const MemoryLimitError&) {
-      error_ = std::current_exception();
-      done = true;
-      return;
-    }
-    if (c.piece.nulAfter()) {
-      error_ = std::make_exception_ptr(nulError(c.lineBefore + c.lines + 1));
-      done = true;
-    }
-  }
-
-  void parseChunk(Chunk& c) {
-    const std::string_view text = c.text();
-    std::int64_t e = c.firstElement;
-    for (auto it = c.nonEmpty.begin(); e < nv_ + nf_ && it != c.nonEmpty.end(); ++it, ++e) {
-      const std::string_view line = text.substr(it->begin, it->length);
-      try {
-        const std::size_t lineNumber = c.lineBefore + it->number;
-        if (e < nv_)
-          mesh_.vertices[static_cast<std::size_t>(e)] = vertexOf(line, e, lineNumber);
-        else
-          readFace(line, e - nv_, lineNumber, c);
-      } catch (const InputError&) {
-        c.error = std::current_exception();
-        return;
-      }
-    }
+        [&](std::int64_t e) { return std::max<std::int64_t>(0, e - nv_); });
   }
 
   Vec3 vertexOf(std::string_view line, std::int64_t index, std::size_t lineNumber) const {
@@ -251,8 +172,7 @@ class OffParser {
   MemoryBudget& budget_;
   std::int64_t nv_ = 0, nf_ = 0;
   MeshData mesh_;
-  std::int64_t elements_ = 0;  // elements read before the first error
-  std::exception_ptr error_;
+  std::int64_t elements_ = 0;  // elements read
 };
 }  // namespace
 

@@ -7,8 +7,6 @@
 namespace meshtrace {
 
 namespace {
-constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
-
 // Bytes of a PLY scalar type, 0 if unknown; whether it is a floating-point
 // or a signed integer type.
 int plyTypeSize(std::string_view type, bool& isFloat, bool& isSigned) {

@@ -13,6 +13,8 @@
 #include "io/element_problems.h"
 #include "io/file_source.h"
 #include "io/mesh_arrays.h"
+#include "io/ply_ascii_reader.h"
+#include "io/ply_layout.h"
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/input_error.h"
 #include "meshtrace/io/mesh_reader.h"
@@ -75,10 +77,11 @@ class BinaryPlyReader {
   BinaryPlyReader(text::FileSource& source, MemoryBudget& budget)
       : file_(source.file()), source_(source), budget_(budget), in_(source, kBufferBytes) {}
 
-  std::optional<MeshData> read() {
+  MeshData read() {
     if (source_.size() == 0) fail("empty file");
     const PlyHeader header = readPlyHeader(file_, in_.buffered(), source_.size());
-    if (!handles(header)) return std::nullopt;
+    if (header.format == "ascii" || !readablePlyLayout(header))
+      fail("the header changed while the file was read");
     swap_ = (header.format == "binary_big_endian") != (std::endian::native == std::endian::big);
     vertices_ = static_cast<std::int64_t>(header.vertices);
     in_.skip(header.bodyStart);
@@ -95,34 +98,6 @@ class BinaryPlyReader {
   }
 
  private:
-  // The files read here; the others go on to OpenMesh's reader.
-  static bool handles(const PlyHeader& header) {
-    if (header.format == "ascii") return false;
-    int vertexElements = 0, faceElements = 0;
-    for (const PlyElement& e : header.elements) {
-      if (e.name == "vertex") {
-        ++vertexElements;
-        for (const PlyProperty& p : e.properties) {
-          const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
-          if (coordinate && p.countSize != 0) return false;
-        }
-      }
-      if (e.name == "face") {
-        // Faces may come first: their indices are checked against the
-        // header's vertex count, and the polygons cut once all is read.
-        ++faceElements;
-        int cornerLists = 0;
-        for (const PlyProperty& p : e.properties) {
-          if (!isPlyCornerList(e, p)) continue;
-          ++cornerLists;
-          if (p.isFloat) return false;
-        }
-        if (cornerLists != 1) return false;
-      }
-    }
-    return vertexElements == 1 && faceElements <= 1;
-  }
-
   [[noreturn]] void fail(const std::string& what) const { throw InputError::inFile(file_, what); }
   [[noreturn]] void endsAt(const PlyElement& e, std::uint64_t i) const {
     fail("file ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count));
@@ -251,8 +226,19 @@ class BinaryPlyReader {
 };
 }  // namespace
 
-std::optional<MeshData> readBinaryPly(const std::filesystem::path& file, MemoryBudget& budget) {
+std::optional<MeshData> readPly(const std::filesystem::path& file, MemoryBudget& budget) {
+  // A first look at the header, to choose the reader; each reader then
+  // reads the file from its start, with its progress reported.
+  PlyHeader header;
+  {
+    text::FileSource peek(file, kMaxPlyBytes);
+    if (peek.size() == 0) throw InputError::inFile(file, "empty file");
+    text::ByteReader start(peek, kMaxPlyHeaderBytes);
+    header = readPlyHeader(file, start.buffered(), peek.size());
+  }
+  if (!readablePlyLayout(header)) return std::nullopt;
   text::FileSource source(file, kMaxPlyBytes, budget.loadObserver());
+  if (header.format == "ascii") return readAsciiPly(source, budget);
   return BinaryPlyReader(source, budget).read();
 }
 

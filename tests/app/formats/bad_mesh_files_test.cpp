@@ -50,9 +50,11 @@ const std::string kNanVertices3 =
 
 std::vector<BadMesh> badMeshes() {
   return {
-      // OpenMesh's reader would say "face 0 refers to vertex 0 of 0".
+      // A layout the core's reader leaves to OpenMesh's (float corner
+      // indices), the faces first: OpenMesh's reader would say "face 0
+      // refers to vertex 0 of 0".
       {"faces_first.ply",
-       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\n"
        "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
        "3 0 1 2\n" +
            kVertices3,
@@ -87,7 +89,7 @@ std::vector<BadMesh> badMeshes() {
       {"two_corners.ply", kPlyAscii3 + kVertices3 + "2 0 1\n", {"face 0", "2 corners"}},
       {"corner_out_of_range.ply",
        kPlyAscii3 + kVertices3 + "3 0 1 7\n",
-       {"corner_out_of_range.ply", "face 0", "vertex 7"}},
+       {"corner_out_of_range.ply:13", "face 0", "vertex index 7"}},
       {"huge_list.ply",
        kPlyBinary3 + kBinaryVertices3 + littleEndian32(2000000000),
        {"huge_list.ply", "face 0", "2000000000 corners"}},

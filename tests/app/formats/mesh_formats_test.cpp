@@ -92,7 +92,7 @@ TEST_F(MeshFormats, BinaryPlyLoadsThePolygonsOpenMeshLoads) {
     SCOPED_TRACE(test::describe(layout));
     test::writeFile(file, test::binaryPly(polygons, layout));
     MemoryBudget budget(defaultMemoryLimit());
-    const std::optional<MeshData> ours = readBinaryPly(file, budget);
+    const std::optional<MeshData> ours = readPly(file, budget);
     ASSERT_TRUE(ours.has_value());
     const MeshData openMesh = formats::readOpenMeshFile(file, budget);
     EXPECT_EQ(ours->vertices, openMesh.vertices);
@@ -101,12 +101,9 @@ TEST_F(MeshFormats, BinaryPlyLoadsThePolygonsOpenMeshLoads) {
   }
 }
 
-// OBJ, read by OpenMesh before the core had a reader of its own, loads to
-// the mesh OpenMesh's reader makes of it (its coordinates exact in float),
-// polygons triangulated alike, with every form of corner.
-TEST_F(MeshFormats, ObjLoadsThePolygonsOpenMeshLoads) {
-  const auto file =
-      test::writeFile(test::scratchDir() / "polygons.obj", test::objText(test::polygonMesh(3)));
+// The mesh of `file`, polygons among its faces, by our reader and by
+// OpenMesh's: the same vertices and triangles.
+void expectOurReaderLoadsWhatOpenMeshLoads(const std::filesystem::path& file) {
   MemoryBudget budget(defaultMemoryLimit());
   const MeshData ours = readMesh(file, budget);
   const MeshData openMesh = formats::readOpenMeshFile(file, budget);
@@ -115,14 +112,48 @@ TEST_F(MeshFormats, ObjLoadsThePolygonsOpenMeshLoads) {
   EXPECT_EQ(ours.triangles, openMesh.triangles);
 }
 
-// The binary PLY files of the tests above are read by the core's reader.
-TEST_F(MeshFormats, BinaryPlyOfEitherByteOrderIsReadByTheCoreReader) {
+// ASCII PLY, read by OpenMesh before the core had a reader of its own,
+// loads to the mesh OpenMesh's reader makes of it when its coordinates are
+// exact in float (OpenMesh reads them in float), polygons triangulated
+// alike, with other properties and an element of another kind around them.
+TEST_F(MeshFormats, AsciiPlyLoadsThePolygonsOpenMeshLoads) {
+  const test::PolygonMesh polygons = test::polygonMesh(3);
+  std::string text = "ply\nformat ascii 1.0\nelement vertex " +
+                     std::to_string(polygons.vertices.size()) +
+                     "\nproperty float x\nproperty float y\nproperty float z\n"
+                     "property uchar red\nelement face " +
+                     std::to_string(polygons.faces.size()) +
+                     "\nproperty list uchar int vertex_indices\nproperty float quality\n"
+                     "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+  for (const Vec3& v : polygons.vertices)
+    text += std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z) + " 200\n";
+  for (const auto& face : polygons.faces) {
+    text += std::to_string(face.size());
+    for (std::uint32_t i : face) text += " " + std::to_string(i);
+    text += " 0.5\n";
+  }
+  text += "0 1\n";
+  expectOurReaderLoadsWhatOpenMeshLoads(
+      test::writeFile(test::scratchDir() / "polygons.ply", text));
+}
+
+// OBJ, read by OpenMesh before the core had a reader of its own, loads to
+// the mesh OpenMesh's reader makes of it (its coordinates exact in float),
+// polygons triangulated alike, with every form of corner.
+TEST_F(MeshFormats, ObjLoadsThePolygonsOpenMeshLoads) {
+  expectOurReaderLoadsWhatOpenMeshLoads(
+      test::writeFile(test::scratchDir() / "polygons.obj", test::objText(test::polygonMesh(3))));
+}
+
+// The PLY files of the tests above are read by the core's reader.
+TEST_F(MeshFormats, PlyOfEveryEncodingIsReadByTheCoreReader) {
   const auto scratch = test::scratchDir();
-  for (MeshFormat format : {MeshFormat::PlyBinary, MeshFormat::PlyBinaryBigEndian}) {
+  for (MeshFormat format :
+       {MeshFormat::PlyBinary, MeshFormat::PlyBinaryBigEndian, MeshFormat::PlyAscii}) {
     const auto file = scratch / (test::formatName(format) + ".ply");
     test::writeMeshFile(testMesh(), format, file);
     MemoryBudget budget(defaultMemoryLimit());
-    EXPECT_TRUE(readBinaryPly(file, budget).has_value()) << test::formatName(format);
+    EXPECT_TRUE(readPly(file, budget).has_value()) << test::formatName(format);
   }
 }
 

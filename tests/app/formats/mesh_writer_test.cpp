@@ -58,8 +58,9 @@ TEST_F(MeshWriter, EveryFormatReadsBackAsTheSameTriangles) {
   }
 }
 
-// OFF and PLY (double coordinates) hold any double: the generators' meshes
-// come back bit for bit, so a scene renders the same from either.
+// OFF, PLY (double coordinates) and ASCII PLY hold any double: the
+// generators' meshes come back bit for bit, so a scene renders the same
+// from any of them.
 TEST_F(MeshWriter, OffAndPlyKeepEveryCoordinateExactly) {
   const MeshData mesh = makeTorusKnot(Vec3(0.1, 1.3, 0.0), 0.45, 2, 3, 0.42, 64, 12);
   const auto dir = test::scratchDir();
@@ -68,6 +69,9 @@ TEST_F(MeshWriter, OffAndPlyKeepEveryCoordinateExactly) {
     writeMesh(mesh, file);
     expectSameBits(readBack(file), mesh, extension);
   }
+  const auto ascii = dir / "knot-ascii.ply";
+  writeAsciiPly(mesh, ascii);
+  expectSameBits(readBack(ascii), mesh, "ASCII PLY");
 }
 
 TEST_F(MeshWriter, FloatPlyRoundsEachCoordinateToNearest) {

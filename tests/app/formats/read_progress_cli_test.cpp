@@ -1,4 +1,4 @@
-// The meshes OpenMesh reads (ASCII PLY here) show the same load line as those
+// The meshes OpenMesh reads (ASCII STL here) show the same load line as those
 // the core reads: on a terminal (a pseudo-terminal made by script(1)),
 // how much of the file is read, rising as it is, then "computing normals"
 // once the whole file counts as read.
@@ -15,19 +15,20 @@
 namespace meshtrace {
 namespace {
 
-TEST(OpenMeshReadProgress, AnAsciiPlyFileShowsHowMuchIsRead) {
+TEST(OpenMeshReadProgress, AnAsciiStlFileShowsHowMuchIsRead) {
   const auto dir = test::scratchDir();
-  // 250k triangles, about 10 MB of ASCII PLY: above the 8 MB from which a
-  // load shows a line.
-  const auto ply = dir / "knot.ply";
-  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 1250, 100),
-                      test::MeshFormat::PlyAscii, ply);
-  ASSERT_GT(std::filesystem::file_size(ply), 8u << 20);
+  // 150k triangles, over 8 MB of ASCII STL (above the 8 MB from which a
+  // load shows a line) and more than twice the 64k facets the reader
+  // reports progress by.
+  const auto stl = dir / "knot.stl";
+  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 750, 100),
+                      test::MeshFormat::StlAscii, stl);
+  ASSERT_GT(std::filesystem::file_size(stl), 8u << 20);
   const auto r = test::runOnTerminal(
-      test::raytraceTool().string() + " " + ply.string() + " " + (dir / "out.png").string(), dir);
+      test::raytraceTool().string() + " " + stl.string() + " " + (dir / "out.png").string(), dir);
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   std::set<std::string> shares;
-  const std::string line = "loading knot.ply: ";
+  const std::string line = "loading knot.stl: ";
   for (std::size_t at = r.out.find(line); at != std::string::npos; at = r.out.find(line, at + 1)) {
     const std::size_t start = at + line.size();
     const std::size_t percent = r.out.find('%', start);

@@ -26,7 +26,7 @@ using test::PlyLayout;
 
 std::optional<MeshData> readPlyBytes(const std::string& bytes) {
   MemoryBudget budget(defaultMemoryLimit());
-  return readBinaryPly(test::writeFile(test::scratchDir() / "mesh.ply", bytes), budget);
+  return readPly(test::writeFile(test::scratchDir() / "mesh.ply", bytes), budget);
 }
 
 MeshData readOffOf(const test::PolygonMesh& mesh) {
@@ -99,10 +99,24 @@ TEST(BinaryPly, ReadsFacesListedBeforeTheirVertices) {
   EXPECT_EQ(ply->triangles, off.triangles);
 }
 
-TEST(BinaryPly, LeavesAsciiToOtherReaders) {
-  EXPECT_FALSE(
-      readPlyBytes("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
-                   "property float y\nproperty float z\nend_header\n0 0 0\n"));
+TEST(BinaryPly, LeavesTwoFaceElementsAndFloatCornersToOtherReaders) {
+  const std::string vertices =
+      " 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n";
+  for (const char* format : {"ascii", "binary_little_endian"}) {
+    EXPECT_FALSE(readPlyBytes(std::string("ply\nformat ") + format + vertices +
+                              "element face 0\nproperty list uchar int vertex_indices\n"
+                              "element face 0\nproperty list uchar int vertex_indices\n"
+                              "end_header\n"))
+        << format;
+    EXPECT_FALSE(readPlyBytes(std::string("ply\nformat ") + format + vertices +
+                              "element face 0\nproperty list uchar float vertex_indices\n"
+                              "end_header\n"))
+        << format;
+    EXPECT_TRUE(readPlyBytes(std::string("ply\nformat ") + format + vertices +
+                             "element face 0\nproperty list uchar int vertex_indices\n"
+                             "end_header\n"))
+        << format;
+  }
 }
 
 // Vertices with lists beside their coordinates (of sizes that differ from
@@ -214,7 +228,7 @@ struct SmallPly {
 std::string plyErrorOf(const std::string& bytes, std::uint64_t memory = defaultMemoryLimit()) {
   const auto file = test::writeFile(test::scratchDir() / "mesh.ply", bytes);
   MemoryBudget budget(memory);
-  return test::inputErrorOf([&] { readBinaryPly(file, budget); });
+  return test::inputErrorOf([&] { readPly(file, budget); });
 }
 
 TEST(BinaryPly, ReadsTheSmallMeshTheBadOnesBreak) {

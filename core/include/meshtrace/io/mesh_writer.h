@@ -11,6 +11,10 @@ namespace meshtrace {
 // OFF text whose coordinates read back exactly (shortest round-trip form).
 void writeOff(const MeshData& mesh, const std::filesystem::path& path);
 
+// ASCII PLY with OFF's lines: "x y z" (double, read back exactly) and
+// "3 a b c" ("list uchar int vertex_indices").
+void writeAsciiPly(const MeshData& mesh, const std::filesystem::path& path);
+
 // Binary little-endian PLY: a vertex element of x, y, z and a face element
 // of "list uchar int vertex_indices". Double coordinates read back exactly;
 // float ones are what scanners and exporters write, rounded to nearest.

@@ -3,6 +3,7 @@
 // its count and properties. Read strictly, by the PLY reader and by the
 // check run before OpenMesh's reader alike, so that both refuse the same
 // headers with the same words.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -10,6 +11,9 @@
 #include <vector>
 
 namespace meshtrace {
+
+// The most bytes a header may take: it must end within them.
+inline constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 
 struct PlyProperty {
   std::string name;

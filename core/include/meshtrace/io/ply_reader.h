@@ -1,7 +1,8 @@
 #pragma once
-// Reader for binary PLY meshes (either byte order), streamed from the file
-// as OFF's reader streams its text: the triangles are those of OFF's reader
-// for the same polygons.
+// Reader for PLY meshes, ASCII and binary (either byte order), streamed
+// from the file as OFF's reader streams its text: the triangles are those
+// of OFF's reader for the same polygons, and an ASCII file's coordinates
+// are read in double as OFF's are.
 #include <filesystem>
 #include <optional>
 
@@ -10,17 +11,19 @@
 
 namespace meshtrace {
 
-// Reads a binary PLY file whose vertex element has x, y and z of any PLY
-// number type (its other properties, lists too, skipped) and whose face
-// element lists its corners with integer indices; other elements and
-// properties are skipped by their size. Returns std::nullopt, having read
-// only the header, for a PLY file it leaves to other readers: ASCII,
-// more than one vertex or face element, float corner indices. Faces may
-// come before the vertices. Throws InputError
-// naming the file and the element ("face 17") on bad input: a header
-// readPlyHeader refuses, a truncated body, corner counts below 3 or above
-// the vertex count, indices out of range, non-finite coordinates. The
+// Reads a PLY file whose vertex element has x, y and z of any PLY number
+// type (its other properties, lists too, skipped) and whose face element
+// lists its corners with integer indices; other elements and properties
+// are skipped (a binary file's by their size; an ASCII file's values are
+// checked against their types, one record to a line). Returns
+// std::nullopt, having read only the header, for a PLY file it leaves to
+// other readers: more than one vertex or face element, float corner
+// indices. Faces may come before the vertices.
+// Throws InputError naming the file and the element ("face 17"), and for
+// ASCII the line, on bad input: a header readPlyHeader refuses, a
+// truncated body, corner counts below 3 or above the vertex count, indices
+// out of range, non-finite coordinates, a record of the wrong values. The
 // arrays are reserved in `budget` before they are allocated.
-std::optional<MeshData> readBinaryPly(const std::filesystem::path& file, MemoryBudget& budget);
+std::optional<MeshData> readPly(const std::filesystem::path& file, MemoryBudget& budget);
 
 }  // namespace meshtrace
