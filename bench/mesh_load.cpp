@@ -49,15 +49,21 @@ void printMeshLoadTimes(const std::filesystem::path& off) {
   auto asciiPly = off;
   asciiPly.replace_filename(off.stem().string() + "-ascii.ply");
   if (!std::filesystem::exists(asciiPly)) writeAsciiPly(mesh, asciiPly);
-  std::vector<double> offMs, plyMs, openMeshMs, asciiMs, asciiOpenMeshMs;
+  // Binary STL: each facet's corners as floats.
+  auto stl = off;
+  stl.replace_extension(".stl");
+  if (!std::filesystem::exists(stl)) writeMesh(mesh, stl);
+  std::vector<double> offMs, plyMs, openMeshMs, asciiMs, asciiOpenMeshMs, stlMs, stlOpenMeshMs;
   const std::size_t n = mesh.triangles.size();
   for (int round = 0; round < kRounds; ++round) {  // interleaved: all see the same load
     offMs.push_back(loadMs(off, n));
     plyMs.push_back(loadMs(ply, n));
     asciiMs.push_back(loadMs(asciiPly, n));
-    // The reader PLY had before the core read it.
+    // The reader PLY and STL had before the core read them.
     openMeshMs.push_back(loadMs(ply, n, formats::readOpenMeshFile));
     asciiOpenMeshMs.push_back(loadMs(asciiPly, n, formats::readOpenMeshFile));
+    stlMs.push_back(loadMs(stl, n));
+    stlOpenMeshMs.push_back(loadMs(stl, n, formats::readOpenMeshFile));
   }
   const double a = median(offMs), b = median(plyMs), c = median(openMeshMs);
   const double d = median(asciiMs), e = median(asciiOpenMeshMs);
@@ -72,6 +78,10 @@ void printMeshLoadTimes(const std::filesystem::path& off) {
   const auto asciiBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(asciiPly));
   std::printf("| ASCII PLY (ours) | %ju | %.1f | %.2f |\n", asciiBytes, d, d / a);
   std::printf("| ASCII PLY (OpenMesh) | %ju | %.1f | %.2f |\n", asciiBytes, e, e / a);
+  const double g = median(stlMs), h = median(stlOpenMeshMs);
+  const auto stlBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(stl));
+  std::printf("| binary STL (ours) | %ju | %.1f | %.2f |\n", stlBytes, g, g / a);
+  std::printf("| binary STL (OpenMesh) | %ju | %.1f | %.2f |\n", stlBytes, h, h / a);
 }
 
 }  // namespace meshtrace::bench

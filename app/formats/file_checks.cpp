@@ -182,54 +182,6 @@ class PlyCheck {
   PlyHeader header_;
 };
 
-// ---- STL ----
-
-// Returns the facets.
-std::uint64_t checkAsciiStl(const std::filesystem::path& file, std::string_view bytes) {
-  Tokens tokens(bytes);
-  std::string_view t;
-  const auto expect = [&](std::string_view word, const std::string& where) {
-    if (!tokens.next(t)) throw InputError::inFile(file, "file ends in " + where);
-    if (t != word)
-      throw InputError::atLine(file, tokens.line(),
-                               where + ": expected " + std::string(word) + ", found " + quoted(t));
-  };
-  const auto numbers = [&](int n, const std::string& where) {
-    for (int k = 0; k < n; ++k) {
-      if (!tokens.next(t)) throw InputError::inFile(file, "file ends in " + where);
-      if (!isNumber(t))
-        throw InputError::atLine(file, tokens.line(),
-                                 where + ": " + quoted(t) + " is not a number");
-    }
-  };
-  if (!tokens.next(t) || t != "solid")
-    throw InputError::inFile(file,
-                             "neither a binary STL (its size does not match the triangle "
-                             "count at byte 80) nor an ASCII one (it must start with solid)");
-  // The solid's name runs to the first facet or endsolid.
-  while (tokens.next(t) && t != "facet" && t != "endsolid") {
-  }
-  std::size_t facet = 0;
-  for (; t == "facet"; ++facet) {
-    const std::string where = "facet " + std::to_string(facet);
-    expect("normal", where);
-    numbers(3, where);
-    expect("outer", where);
-    expect("loop", where);
-    for (int v = 0; v < 3; ++v) {
-      expect("vertex", where);
-      numbers(3, where);
-    }
-    expect("endloop", where + " (a facet has three vertices)");
-    expect("endfacet", where);
-    if (!tokens.next(t))
-      throw InputError::inFile(file, "file ends after " + where + ": no endsolid");
-  }
-  if (t != "endsolid")
-    throw InputError::atLine(file, tokens.line(), "expected facet or endsolid, found " + quoted(t));
-  return facet;
-}
-
 std::uint32_t littleEndian32(const char* at) {
   unsigned char b[4];
   std::memcpy(b, at, 4);
@@ -240,14 +192,6 @@ std::uint32_t littleEndian32(const char* at) {
 
 ElementCounts checkPly(const std::filesystem::path& file, std::string_view bytes) {
   return PlyCheck(file, bytes).run();
-}
-
-ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes) {
-  if (bytes.size() >= 84) {
-    const std::uint64_t triangles = littleEndian32(bytes.data() + 80);
-    if (bytes.size() == 84 + 50 * triangles) return {0, triangles};  // binary, whole
-  }
-  return {0, checkAsciiStl(file, bytes)};
 }
 
 [[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes) {

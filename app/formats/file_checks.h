@@ -1,9 +1,8 @@
 #pragma once
 // Checks of a mesh file before OpenMesh's readers see it. Those readers
 // trust what a file says: a PLY header without end_header or a face list
-// of 2^31 corners keeps them reading forever, a truncated ASCII STL loads
-// as a smaller mesh without a word, counts in headers go to reserve()
-// unchecked. Each check
+// of 2^31 corners keeps them reading forever, counts in headers go to
+// reserve() unchecked. Each check
 // walks the file's structure (no values are kept, nothing is allocated per
 // element) and throws InputError naming the file, the line or the element,
 // and what is wrong.
@@ -14,8 +13,7 @@
 namespace meshtrace::formats {
 
 // The elements a checked file holds, for the progress of its read: its
-// vertices (0 where the format does not say, as STL, whose corners are
-// merged into vertices as they are read) and its faces.
+// vertices and its faces.
 struct ElementCounts {
   std::uint64_t vertices = 0, faces = 0;
 };
@@ -25,10 +23,6 @@ struct ElementCounts {
 // with a list of vertex indices; counts a file of this size can hold; then
 // every element of the body, each face listing 3 to (vertex count) corners.
 ElementCounts checkPly(const std::filesystem::path& file, std::string_view bytes);
-// Binary when its size is 84 + 50 x the triangle count at byte 80 (as
-// OpenMesh decides), else ASCII: solid, then facets of exactly three
-// vertices of three numbers each, then endsolid.
-ElementCounts checkStl(const std::filesystem::path& file, std::string_view bytes);
 // The header's counts against the file's size; then refused (README).
 [[noreturn]] void checkOm(const std::filesystem::path& file, std::string_view bytes);
 

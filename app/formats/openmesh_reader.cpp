@@ -51,7 +51,7 @@ class ReadProgress {
       : observer_(observer), file_(std::move(file)), fileBytes_(fileBytes), counts_(counts) {}
 
   void vertex() {
-    if (counts_.vertices > 0) step();  // else not counted (STL)
+    if (counts_.vertices > 0) step();
   }
   void face() { step(); }
   // The rest of the file, once the read is over.
@@ -255,7 +255,6 @@ std::pair<std::uint64_t, formats::ElementCounts> checkBeforeReading(
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   formats::ElementCounts counts;
   if (extension == ".ply") counts = checkPly(file, mapped.bytes());
-  if (extension == ".stl") counts = checkStl(file, mapped.bytes());
   if (extension == ".om") checkOm(file, mapped.bytes());
   return {mapped.bytes().size(), counts};
 }
@@ -304,7 +303,7 @@ void silenceOpenMesh() {
 void registerOpenMeshFormats() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const char* extension : {".stl", ".om"}) registerMeshReader(extension, readOpenMeshFile);
+    registerMeshReader(".om", readOpenMeshFile);
     // PLY is read by the core's reader, streamed (quicker than OpenMesh's
     // generic properties, and in double from ASCII); the rare layouts it
     // leaves come here.

@@ -1,7 +1,7 @@
 #pragma once
-// STL (ASCII and binary), OM and the PLY layouts the core's reader leaves
-// through OpenMesh's readers; OBJ, OFF and PLY have readers of their own
-// in the core. A library of its own, so that the core never depends on
+// OM (refused after its check) and the PLY layouts the core's reader
+// leaves, through OpenMesh's readers; OFF, OBJ, PLY and STL have readers
+// of their own in the core. A library of its own, so that the core never depends on
 // OpenMesh: the tools link it and register its readers at start.
 #include <filesystem>
 
@@ -10,17 +10,18 @@
 
 namespace meshtrace::formats {
 
-// Registers readOpenMeshFile for .stl and .om, and for .ply the
+// Registers readOpenMeshFile for .om, and for .ply the
 // core's PLY reader (readPly), with readOpenMeshFile for the PLY files it
 // leaves (registerMeshReader); only the first call does, so
 // every loader may call it first.
 void registerOpenMeshFormats();
 
 // Reads a mesh with the OpenMesh reader of its extension (.ply, .stl or
-// .om, each checked first, file_checks.h; an .obj goes unchecked), polygons
-// triangulated as OFF's are (polygon.h). Only the faces' corners are taken: no
-// topology is built, so a non-manifold mesh keeps every face. STL lists
-// each triangle's corners apart; its reader merges equal points, so the
+// .om; PLY and OM checked first, file_checks.h; other formats go
+// unchecked, for comparisons in the tests), polygons triangulated as OFF's
+// are (polygon.h). Only the faces' corners are taken: no topology is
+// built, so a non-manifold mesh keeps every face. STL lists each
+// triangle's corners apart; its reader merges equal points, so the
 // vertices are shared as in an indexed mesh. Throws InputError naming the
 // file (and the element where known) on bad input; reserves its arrays in
 // `budget` before allocating them.

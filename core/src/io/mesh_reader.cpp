@@ -7,6 +7,7 @@
 #include "meshtrace/geometry/polygon.h"
 #include "meshtrace/io/obj_reader.h"
 #include "meshtrace/io/off_reader.h"
+#include "meshtrace/io/stl_reader.h"
 
 namespace meshtrace {
 
@@ -22,8 +23,10 @@ std::map<std::string, MeshReader>& readers() {
   static std::map<std::string, MeshReader> byExtension = {
       {".off", [](const std::filesystem::path& file,
                   MemoryBudget& budget) { return readOff(file, budget); }},
-      {".obj", [](const std::filesystem::path& file, MemoryBudget& budget) {
-         return readObj(file, budget);
+      {".obj", [](const std::filesystem::path& file,
+                  MemoryBudget& budget) { return readObj(file, budget); }},
+      {".stl", [](const std::filesystem::path& file, MemoryBudget& budget) {
+         return readStl(file, budget);
        }}};
   return byExtension;
 }

@@ -1,4 +1,5 @@
-// The meshes OpenMesh reads (ASCII STL here) show the same load line as those
+// The meshes OpenMesh reads (a PLY of two face elements here, which the
+// core's reader leaves to it) show the same load line as those
 // the core reads: on a terminal (a pseudo-terminal made by script(1)),
 // how much of the file is read, rising as it is, then "computing normals"
 // once the whole file counts as read.
@@ -7,28 +8,34 @@
 #include <set>
 #include <string>
 
-#include "meshtrace/geometry/mesh_generators.h"
 #include "mesh_files.h"
+#include "meshtrace/geometry/mesh_generators.h"
 #include "support/cli.h"
+#include "support/files.h"
 #include "support/paths.h"
 
 namespace meshtrace {
 namespace {
 
-TEST(OpenMeshReadProgress, AnAsciiStlFileShowsHowMuchIsRead) {
+TEST(OpenMeshReadProgress, APlyFileItReadsShowsHowMuchIsRead) {
   const auto dir = test::scratchDir();
-  // 150k triangles, over 8 MB of ASCII STL (above the 8 MB from which a
-  // load shows a line) and more than twice the 64k facets the reader
-  // reports progress by.
-  const auto stl = dir / "knot.stl";
-  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 750, 100),
-                      test::MeshFormat::StlAscii, stl);
-  ASSERT_GT(std::filesystem::file_size(stl), 8u << 20);
+  // 750k triangles, about 36 MB of ASCII PLY: above the 8 MB from which a
+  // load shows a line, and long enough to read (several tenths of a second)
+  // for the line to be drawn again, a tenth of a second apart. A second face element, empty, sends
+  // it to OpenMesh (whose reader takes the faces of the last).
+  const auto ply = dir / "knot.ply";
+  test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 3750, 100),
+                      test::MeshFormat::PlyAscii, ply);
+  std::string text = test::readFileBytes(ply);
+  text.insert(text.find("element face"),
+              "element face 0\nproperty list uchar int vertex_indices\n");
+  test::writeFile(ply, text);
+  ASSERT_GT(std::filesystem::file_size(ply), 8u << 20);
   const auto r = test::runOnTerminal(
-      test::raytraceTool().string() + " " + stl.string() + " " + (dir / "out.png").string(), dir);
+      test::raytraceTool().string() + " " + ply.string() + " " + (dir / "out.png").string(), dir);
   ASSERT_TRUE(r.exited && r.exitCode == 0) << test::describe(r);
   std::set<std::string> shares;
-  const std::string line = "loading knot.stl: ";
+  const std::string line = "loading knot.ply: ";
   for (std::size_t at = r.out.find(line); at != std::string::npos; at = r.out.find(line, at + 1)) {
     const std::size_t start = at + line.size();
     const std::size_t percent = r.out.find('%', start);

@@ -1,0 +1,69 @@
+#include "io/corner_welder.h"
+
+#include <bit>
+#include <cstring>
+#include <string>
+
+#include "io/mesh_arrays.h"
+
+namespace meshtrace {
+
+namespace {
+// A hash of the position's coordinates as they compare: adding +0 turns -0
+// into +0 and leaves every other value as it is.
+std::uint64_t hashOf(const Vec3& p) {
+  std::uint64_t h = 0;
+  for (int k = 0; k < 3; ++k) {
+    h = (h ^ std::bit_cast<std::uint64_t>(p[k] + 0.0)) * 0x9e3779b97f4a7c15u;
+    h ^= h >> 29;
+  }
+  return h;
+}
+}  // namespace
+
+CornerWelder::CornerWelder(MeshData& mesh, MemoryBudget& budget, const std::filesystem::path& file,
+                           std::size_t expectedVertices)
+    : mesh_(mesh), budget_(budget), file_(file) {
+  mesh_arrays::growVertices(mesh_, budget_, expectedVertices, file_);
+  std::size_t slots = 16;
+  while (slots < 2 * expectedVertices) slots *= 2;
+  budget_.reserve(slots * sizeof(std::uint32_t), "load",
+                  "the vertex table of " + file_.filename().string());
+  slots_.assign(slots, 0);
+  mask_ = slots - 1;
+}
+
+CornerWelder::~CornerWelder() { budget_.release(slots_.size() * sizeof(std::uint32_t)); }
+
+std::uint32_t CornerWelder::weld(const Vec3& p) {
+  for (std::size_t i = hashOf(p) & mask_;; i = (i + 1) & mask_) {
+    const std::uint32_t slot = slots_[i];
+    if (slot == 0) {
+      const auto index = static_cast<std::uint32_t>(mesh_.vertices.size());
+      if (mesh_.vertices.size() == mesh_.vertices.capacity())
+        mesh_arrays::growVertices(mesh_, budget_, 2 * mesh_.vertices.capacity(), file_);
+      mesh_.vertices.push_back(p);
+      slots_[i] = index + 1;
+      if (2 * mesh_.vertices.size() > slots_.size()) growTable();
+      return index;
+    }
+    if (mesh_.vertices[slot - 1] == p) return slot - 1;
+  }
+}
+
+void CornerWelder::growTable() {
+  const std::size_t slots = 2 * slots_.size();
+  budget_.reserve(slots * sizeof(std::uint32_t), "load",
+                  "the vertex table of " + file_.filename().string());
+  std::vector<std::uint32_t> grown(slots, 0);
+  mask_ = slots - 1;
+  for (std::uint32_t v = 0; v < mesh_.vertices.size(); ++v) {
+    std::size_t i = hashOf(mesh_.vertices[v]) & mask_;
+    while (grown[i] != 0) i = (i + 1) & mask_;
+    grown[i] = v + 1;
+  }
+  budget_.release(slots_.size() * sizeof(std::uint32_t));
+  slots_ = std::move(grown);
+}
+
+}  // namespace meshtrace

@@ -1,0 +1,40 @@
+#pragma once
+// Corners given by position (STL) welded into a mesh's vertices: each
+// position met for the first time becomes the next vertex; a position met
+// again gets that vertex's index. Positions are equal when their
+// coordinates compare equal, so -0 and +0 weld.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "meshtrace/geometry/mesh.h"
+#include "meshtrace/io/memory_budget.h"
+
+namespace meshtrace {
+
+class CornerWelder {
+ public:
+  // Appends to mesh.vertices, its growth and the welder's table planned in
+  // `budget` (naming `file`); `expectedVertices` sizes them at first.
+  CornerWelder(MeshData& mesh, MemoryBudget& budget, const std::filesystem::path& file,
+               std::size_t expectedVertices);
+  ~CornerWelder();
+  CornerWelder(const CornerWelder&) = delete;
+  CornerWelder& operator=(const CornerWelder&) = delete;
+
+  // The index of the vertex at `p` (finite coordinates).
+  std::uint32_t weld(const Vec3& p);
+
+ private:
+  void growTable();
+
+  MeshData& mesh_;
+  MemoryBudget& budget_;
+  std::filesystem::path file_;
+  // Open addressing, linear probing: each slot a vertex index + 1, or 0 when
+  // free. Kept at most half full.
+  std::vector<std::uint32_t> slots_;
+  std::size_t mask_ = 0;
+};
+
+}  // namespace meshtrace

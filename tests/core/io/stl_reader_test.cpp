@@ -1,0 +1,169 @@
+// The STL reader: corners welded into the vertices of an indexed mesh, in
+// the order they first occur; ASCII read in double, with several solids;
+// facets without area left out; bad files refused with an InputError
+// naming the file, the facet and (ASCII) the line.
+#include "meshtrace/io/stl_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "support/files.h"
+#include "support/input_errors.h"
+#include "support/paths.h"
+
+namespace meshtrace {
+namespace {
+
+using test::expectMentions;
+
+MeshData readStlBytes(const std::string& bytes) {
+  MemoryBudget budget(defaultMemoryLimit());
+  return readStl(test::writeFile(test::scratchDir() / "mesh.stl", bytes), budget);
+}
+
+std::string errorOf(const std::string& bytes) {
+  const auto file = test::writeFile(test::scratchDir() / "mesh.stl", bytes);
+  MemoryBudget budget(defaultMemoryLimit());
+  return test::inputErrorOf([&] { readStl(file, budget); });
+}
+
+using Facet = std::vector<Vec3>;  // three corners
+
+std::string binaryStl(const std::vector<Facet>& facets, const std::string& header = "") {
+  std::string out = header;
+  out.resize(80, ' ');
+  const auto put = [&](std::uint32_t bits) {
+    for (int b = 0; b < 4; ++b) out += static_cast<char>(bits >> (8 * b) & 0xff);
+  };
+  put(static_cast<std::uint32_t>(facets.size()));
+  for (const Facet& f : facets) {
+    for (int k = 0; k < 3; ++k)
+      put(std::bit_cast<std::uint32_t>(std::numeric_limits<float>::quiet_NaN()));
+    for (const Vec3& p : f)
+      for (int k = 0; k < 3; ++k) put(std::bit_cast<std::uint32_t>(static_cast<float>(p[k])));
+    out += std::string(2, '\0');
+  }
+  return out;
+}
+
+std::string asciiFacet(const std::string& a, const std::string& b, const std::string& c) {
+  return "  facet normal 0 0 1\n    outer loop\n      vertex " + a + "\n      vertex " + b +
+         "\n      vertex " + c + "\n    endloop\n  endfacet\n";
+}
+
+// Two squares sharing an edge, each of two facets, and a facet whose
+// corners weld into two vertices: the six vertices numbered as they first
+// occur, -0 welded with +0, the flat facet left out.
+const std::vector<Facet> kSquares = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}},
+                                     {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                                     {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}},
+                                     {{1, 0, -0.0}, {2, 1, 0}, {1, 1, 0}},
+                                     {{0, 0, 0}, {2, 0, 0}, {-0.0, 0, 0}}};
+const std::vector<Vec3> kWelded = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                   {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+const std::vector<TriangleIndices> kTriangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+
+TEST(Stl, BinaryCornersWeldIntoTheVerticesOfAnIndexedMesh) {
+  // A header that starts as an ASCII file would: the size decides.
+  const MeshData mesh = readStlBytes(binaryStl(kSquares, "solid but binary"));
+  EXPECT_EQ(mesh.vertices, kWelded);
+  EXPECT_EQ(mesh.triangles, kTriangles);
+}
+
+TEST(Stl, AsciiCornersWeldAlikeAndKeepTheirDoubles) {
+  std::string text = "solid two squares\n";
+  for (const Facet& f : kSquares) {
+    // The corners' integer coordinates, -0 written as such.
+    std::string corners[3];
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) {
+        if (k > 0) corners[c] += ' ';
+        corners[c] +=
+            std::signbit(f[c][k]) ? std::string("-0") : std::to_string(static_cast<int>(f[c][k]));
+      }
+    text += asciiFacet(corners[0], corners[1], corners[2]);
+  }
+  text += "endsolid two squares\n";
+  const MeshData mesh = readStlBytes(text);
+  EXPECT_EQ(mesh.vertices, kWelded);
+  EXPECT_EQ(mesh.triangles, kTriangles);
+
+  // Doubles, not floats; several solids; CRLF line ends; names of any words.
+  const MeshData precise =
+      readStlBytes("solid first part\r\n" + asciiFacet("0.1 0 0", "1 0.2 0", "0 1 1e-300") +
+                   "endsolid first part\r\n\r\nsolid\r\n" +
+                   asciiFacet("0.1 0 0", "0 1 1e-300", "-1 -1 -1") + "endsolid\r\n");
+  EXPECT_EQ(precise.vertices,
+            (std::vector<Vec3>{{0.1, 0, 0}, {1, 0.2, 0}, {0, 1, 1e-300}, {-1, -1, -1}}));
+  EXPECT_EQ(precise.triangles, (std::vector<TriangleIndices>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+TEST(Stl, ReadsAFileOfManyPiecesAsItsFacetsSay) {
+  std::vector<Facet> facets;
+  for (int i = 0; i < 300000; ++i)
+    facets.push_back({{i, 0, 0}, {i + 1, 0, 0}, {i, 1, 0.5 * (i % 7)}});
+  std::string text = "solid strip\n";
+  for (const Facet& f : facets) {
+    const auto point = [](const Vec3& p) {
+      return std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z);
+    };
+    text += asciiFacet(point(f[0]), point(f[1]), point(f[2]));
+  }
+  text += "endsolid strip\n";
+  ASSERT_GT(text.size(), std::size_t{8} << 20);
+  for (const MeshData& mesh : {readStlBytes(text), readStlBytes(binaryStl(facets))}) {
+    ASSERT_EQ(mesh.triangles.size(), facets.size());
+    EXPECT_EQ(mesh.vertices.size(), 2 * facets.size() + 1);  // (i, 0, 0) shared
+    for (std::size_t t = 0; t < facets.size(); t += 997)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(mesh.vertices[mesh.triangles[t][c]], facets[t][c]);
+  }
+}
+
+TEST(Stl, RefusesABadFileNamingTheFacetAndLine) {
+  const std::string good = asciiFacet("0 0 0", "1 0 0", "0 1 0");
+  struct Bad {
+    std::string bytes;
+    std::vector<std::string> mentions;
+  };
+  const Bad bads[] = {
+      {"sold x\n", {"mesh.stl", "neither a binary STL", "nor an ASCII one"}},
+      {std::string("\0\0\0solid", 8), {"mesh.stl", "neither a binary STL"}},
+      {binaryStl({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}).substr(0, 120), {"neither a binary STL"}},
+      {"solid s\n" + good + "  facet normal 0 0 one\n",
+       {"mesh.stl:9", "facet 1", "'one' is not a number"}},
+      {"solid s\n  facet normal 0 0 1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n vertex 0 1 0\n"
+       " vertex 1 1 0\n endloop\n endfacet\nendsolid s\n",
+       {"mesh.stl:7", "facet 0", "three vertices", "expected endloop, found 'vertex'"}},
+      {"solid s\n" + good, {"mesh.stl", "file ends after facet 1: no endsolid"}},
+      {"solid s\n  facet normal 0 0 1\n outer loop\n vertex 0 0 0\n", {"file ends in facet 0"}},
+      {"solid s\n" + good + "facets\n",
+       {"mesh.stl:9", "expected facet or endsolid, found 'facets'"}},
+      {"solid s\n" + good + "endsolid s\nmore\n", {"mesh.stl:10", "expected solid after endsolid"}},
+      {"solid s\n" + asciiFacet("0 0 0", "1 nan 0", "0 1 0"),
+       {"mesh.stl:5", "facet 0", "vertex 1", "non-finite", "'nan'"}},
+      {"solid s\n" + asciiFacet("0 0 0", "1 0 0", "0 1 -inf"),
+       {"mesh.stl:6", "vertex 2", "non-finite"}},
+      {"solid s\n" + asciiFacet("0 0 0", "1 0 0", "0 1 1e999"),
+       {"mesh.stl:6", "facet 0", "'1e999' is not a number"}},
+      {"solid s\n" + good + std::string("  facet normal 0\0 0 1\n", 22), {"mesh.stl:9", "NUL"}},
+      {binaryStl({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                  {{0, 0, 0}, {1, std::numeric_limits<double>::infinity(), 0}, {0, 1, 0}}}),
+       {"mesh.stl", "facet 1", "vertex 1", "non-finite"}},
+  };
+  for (const Bad& bad : bads) {
+    SCOPED_TRACE(bad.bytes.substr(0, 40));
+    const std::string message = errorOf(bad.bytes);
+    for (const std::string& part : bad.mentions)
+      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  }
+  EXPECT_EQ(readStlBytes("solid s\n" + good + "endsolid s\n").triangles.size(), 1u);
+}
+
+}  // namespace
+}  // namespace meshtrace
