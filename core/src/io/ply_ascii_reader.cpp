@@ -32,8 +32,16 @@ enum class Role { Other, X, Y, Z, Corners };
 // file's lines, and what each of its properties is.
 struct ElementLayout {
   const PlyElement* element;
-  std::int64_t firstLine;  // counting the body's non-empty lines from 0
+  std::int64_t firstLine;    // counting the body's non-empty lines from 0
+  std::int64_t facesBefore;  // in the face elements before it
   std::vector<Role> roles;
+
+  bool isFace() const { return element->name == "face"; }
+  // The number in the file of the face or other record on body line `line`:
+  // faces are numbered on from one face element to the next.
+  std::int64_t recordOf(std::int64_t line) const {
+    return line - firstLine + (isFace() ? facesBefore : 0);
+  }
 };
 
 class AsciiPlyReader {
@@ -60,7 +68,10 @@ class AsciiPlyReader {
         [&](std::string_view line, std::int64_t e, std::size_t lineNumber, text::ElementChunk& c) {
           readRecord(line, e, lineNumber, c);
         },
-        [&](std::int64_t e) { return std::clamp<std::int64_t>(e - facesFrom_, 0, faces_); });
+        [&](std::int64_t e) {
+          const ElementLayout& at = layoutOf(e);
+          return at.isFace() ? at.recordOf(e) : at.facesBefore;
+        });
     if (read < lines_) {
       const ElementLayout& at = layoutOf(read);
       fail("file ends at " + at.element->name + " " + std::to_string(read - at.firstLine) + " of " +
@@ -78,7 +89,7 @@ class AsciiPlyReader {
   void layOut() {
     for (const PlyElement& e : header_.elements) {
       if (e.properties.empty()) continue;
-      ElementLayout layout{&e, lines_, {}};
+      ElementLayout layout{&e, lines_, faces_, {}};
       for (const PlyProperty& p : e.properties) {
         Role role = Role::Other;
         if (e.name == "vertex" && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
@@ -86,10 +97,7 @@ class AsciiPlyReader {
         if (isPlyCornerList(e, p)) role = Role::Corners;
         layout.roles.push_back(role);
       }
-      if (e.name == "face") {
-        facesFrom_ = lines_;
-        faces_ = static_cast<std::int64_t>(e.count);
-      }
+      if (layout.isFace()) faces_ += static_cast<std::int64_t>(e.count);
       layouts_.push_back(std::move(layout));
       // The header's counts fit in the file: their sum does not overflow.
       lines_ += static_cast<std::int64_t>(e.count);
@@ -112,8 +120,9 @@ class AsciiPlyReader {
     const ElementLayout& layout = layoutOf(line);
     const PlyElement& e = *layout.element;
     const std::int64_t index = line - layout.firstLine;
+    const std::int64_t record = layout.recordOf(line);
     const auto fail = [&](const std::string& what) {
-      throw InputError::atLine(file_, lineNumber, e.name + " " + std::to_string(index) + what);
+      throw InputError::atLine(file_, lineNumber, e.name + " " + std::to_string(record) + what);
     };
     text::TokenReader tokens(text);
     std::string_view token;
@@ -162,7 +171,7 @@ class AsciiPlyReader {
            (e.properties.size() == 1 ? " property" : " properties"));
     if (e.name == "vertex")
       mesh_.vertices[static_cast<std::size_t>(index)] = vertex;
-    else if (e.name == "face")
+    else if (layout.isFace())
       appendPolygonTriangles(c.corners, c.triangles, &c.polygons);
   }
 
@@ -173,7 +182,7 @@ class AsciiPlyReader {
   std::vector<ElementLayout> layouts_;
   std::int64_t lines_ = 0;  // the records of all elements
   std::int64_t vertices_ = 0;
-  std::int64_t faces_ = 0, facesFrom_ = 0;
+  std::int64_t faces_ = 0;  // in all face elements
   MeshData mesh_;
 };
 

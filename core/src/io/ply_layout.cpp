@@ -3,13 +3,12 @@
 namespace meshtrace {
 
 bool readablePlyLayout(const PlyHeader& header) {
-  int vertexElements = 0, faceElements = 0;
+  int vertexElements = 0;
   for (const PlyElement& e : header.elements) {
     if (e.name == "vertex") ++vertexElements;
     if (e.name == "face") {
       // Faces may come first: their indices are checked against the
       // header's vertex count, and the polygons cut once all is read.
-      ++faceElements;
       int cornerLists = 0;
       for (const PlyProperty& p : e.properties) {
         if (!isPlyCornerList(e, p)) continue;
@@ -19,7 +18,7 @@ bool readablePlyLayout(const PlyHeader& header) {
       if (cornerLists != 1) return false;
     }
   }
-  return vertexElements == 1 && faceElements <= 1;
+  return vertexElements == 1;
 }
 
 }  // namespace meshtrace

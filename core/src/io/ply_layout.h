@@ -6,8 +6,8 @@
 namespace meshtrace {
 
 // One vertex element (readPlyHeader has seen its x, y and z, single
-// values), and at most one face element, with exactly one corner list of
-// integers.
+// values), and face elements (any number, their faces numbered on from one
+// to the next) each with exactly one corner list of integers.
 bool readablePlyLayout(const PlyHeader& header);
 
 }  // namespace meshtrace

@@ -147,9 +147,13 @@ class BinaryPlyReader {
                      : static_cast<double>(loadInteger(at, c.size, c.isSigned, swap_));
   }
 
+  // The faces of face element `e`, numbered on from those of the face
+  // elements before it.
   void readFaces(const PlyElement& e) {
     // Exact for a triangle mesh; polygons grow it.
-    mesh_arrays::growTriangles(mesh_, budget_, static_cast<std::size_t>(e.count), file_);
+    const std::size_t triangles = mesh_.triangles.size() + static_cast<std::size_t>(e.count);
+    if (triangles > mesh_.triangles.capacity())
+      mesh_arrays::growTriangles(mesh_, budget_, triangles, file_);
     std::size_t cornerList = 0;  // handles() saw that there is one
     while (!isPlyCornerList(e, e.properties[cornerList])) ++cornerList;
     std::vector<std::uint32_t> corners;
@@ -162,14 +166,16 @@ class BinaryPlyReader {
         }
         const std::int64_t count = readCount(e, p, i);
         if (!element_problems::validCornerCount(count, vertices_))
-          fail("face " + std::to_string(i) + element_problems::badCornerCount(count, vertices_));
+          fail("face " + std::to_string(facesBefore_ + i) +
+               element_problems::badCornerCount(count, vertices_));
         corners.clear();
         for (std::int64_t k = 0; k < count; ++k) {
           const char* at = in_.take(static_cast<std::size_t>(p.size));
           if (!at) endsAt(e, i);
           const std::int64_t index = loadInteger(at, p.size, p.isSigned, swap_);
           if (!element_problems::validIndex(index, vertices_))
-            fail("face " + std::to_string(i) + element_problems::indexOutOfRange(index, vertices_));
+            fail("face " + std::to_string(facesBefore_ + i) +
+                 element_problems::indexOutOfRange(index, vertices_));
           corners.push_back(static_cast<std::uint32_t>(index));
         }
         const std::size_t needed = mesh_.triangles.size() + corners.size() - 2;
@@ -179,6 +185,7 @@ class BinaryPlyReader {
         appendPolygonTriangles(corners, mesh_.triangles, &mesh_.polygons);
       }
     }
+    facesBefore_ += e.count;
   }
 
   std::int64_t readCount(const PlyElement& e, const PlyProperty& p, std::uint64_t i) {
@@ -222,6 +229,7 @@ class BinaryPlyReader {
   text::ByteReader in_;
   bool swap_ = false;
   std::int64_t vertices_ = 0;
+  std::uint64_t facesBefore_ = 0;  // of the face elements read
   MeshData mesh_;
 };
 }  // namespace

@@ -137,14 +137,13 @@ std::vector<BadMesh> badMeshes() {
        "OM\x01\x02" + littleEndian32(1000000) + littleEndian32(1000000) + littleEndian32(1000000),
        {"huge_counts.om", "1000000 vertices", "can hold"}},
       {"empty.ply", "", {"empty.ply", "empty file"}},
-      // Two face elements send a binary file to OpenMesh's reader, which
+      // Float corner indices send a binary file to OpenMesh's reader, which
       // cannot convert a uchar coordinate: it said so on std::cerr and
       // misread the rest (found by the fuzzer).
       {"uchar_y_for_openmesh.ply",
        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
        "property uchar y\nproperty float z\nelement face 1\n"
-       "property list uchar int vertex_indices\nelement face 0\n"
-       "property list uchar int vertex_indices\nend_header\n" +
+       "property list uchar float vertex_indices\nend_header\n" +
            std::string(27, '\0') + "\3" + littleEndian32(0) + littleEndian32(1) + littleEndian32(2),
        {"uchar_y_for_openmesh.ply", "cannot read its values", "unsupported conversion"}},
   };

@@ -1,4 +1,4 @@
-// The meshes OpenMesh reads (a PLY of two face elements here, which the
+// The meshes OpenMesh reads (a PLY of float corner indices here, which the
 // core's reader leaves to it) show the same load line as those
 // the core reads: on a terminal (a pseudo-terminal made by script(1)),
 // how much of the file is read, rising as it is, then "computing normals"
@@ -21,14 +21,14 @@ TEST(OpenMeshReadProgress, APlyFileItReadsShowsHowMuchIsRead) {
   const auto dir = test::scratchDir();
   // 750k triangles, about 36 MB of ASCII PLY: above the 8 MB from which a
   // load shows a line, and long enough to read (several tenths of a second)
-  // for the line to be drawn again, a tenth of a second apart. A second face element, empty, sends
-  // it to OpenMesh (whose reader takes the faces of the last).
+  // for the line to be drawn again, a tenth of a second apart. Float corner
+  // indices send it to OpenMesh.
   const auto ply = dir / "knot.ply";
   test::writeMeshFile(makeTorusKnot(Vec3(0.0), 1.0, 2, 3, 0.3, 3750, 100),
                       test::MeshFormat::PlyAscii, ply);
   std::string text = test::readFileBytes(ply);
-  text.insert(text.find("element face"),
-              "element face 0\nproperty list uchar int vertex_indices\n");
+  const std::string corners = "list uchar int vertex_indices";
+  text.replace(text.find(corners), corners.size(), "list uchar float vertex_indices");
   test::writeFile(ply, text);
   ASSERT_GT(std::filesystem::file_size(ply), 8u << 20);
   const auto r = test::runOnTerminal(

@@ -43,7 +43,10 @@ std::string offOf(const test::PolygonMesh& mesh) {
     out += shortest(v.x) + " " + shortest(v.y) + " " + shortest(v.z) + "\n";
   for (const auto& face : mesh.faces) {
     out += std::to_string(face.size());
-    for (std::uint32_t i : face) out += " " + std::to_string(i);
+    for (std::uint32_t i : face) {
+      out += ' ';  // not " " + ...: GCC 12 warns (-Wrestrict) wrongly on that
+      out += std::to_string(i);
+    }
     out += "\n";
   }
   return out;
@@ -124,6 +127,26 @@ TEST(AsciiPly, ReadsPropertiesInAnyOrderAndSkipsWhatIsNotTheMesh) {
   EXPECT_EQ(mesh->vertices, off.vertices);
   EXPECT_EQ(mesh->triangles, off.triangles);
   EXPECT_EQ(mesh->triangles.size(), 3u);
+}
+
+// Several face elements all hold faces of the mesh, numbered on from one
+// to the next.
+TEST(AsciiPly, ReadsTheFacesOfEveryFaceElement) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "element edge 1\nproperty int a\nelement face 2\nproperty uchar flags\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n7\n0 3 1 3 2\n";
+  const std::optional<MeshData> mesh = readAscii(header + body + "0 4 0 1 3 2\n");
+  ASSERT_TRUE(mesh.has_value());
+  ASSERT_EQ(mesh->triangles.size(), 4u);
+  EXPECT_EQ(mesh->triangles[0], (TriangleIndices{0, 1, 2}));
+  EXPECT_EQ(mesh->triangles[1], (TriangleIndices{1, 3, 2}));
+  ASSERT_EQ(mesh->polygons.size(), 1u);
+  EXPECT_EQ(mesh->polygons[0].face, 2u);  // the quad: face 2 of the file
+  expectMentions(errorOf(header + body + "0 4 0 1 3 9\n"),
+                 {"mesh.ply:22", "face 2", "vertex index 9 out of range"});
 }
 
 // Many pieces, read in parallel: the mesh OFF's reader reads, and the first

@@ -12,13 +12,14 @@
 namespace meshtrace {
 
 // Reads a PLY file whose vertex element has x, y and z of any PLY number
-// type (its other properties, lists too, skipped) and whose face element
-// lists its corners with integer indices; other elements and properties
-// are skipped (a binary file's by their size; an ASCII file's values are
-// checked against their types, one record to a line). Returns
-// std::nullopt, having read only the header, for a PLY file it leaves to
-// other readers: more than one vertex or face element, float corner
-// indices. Faces may come before the vertices.
+// type (its other properties, lists too, skipped) and whose face elements
+// (any number; their faces numbered on from one to the next) list their
+// corners with integer indices; other elements and properties are skipped
+// (a binary file's by their size; an ASCII file's values are checked
+// against their types, one record to a line). Returns std::nullopt, having
+// read only the header, for a PLY file it leaves to other readers: more
+// than one vertex element, float corner indices. Faces may come before the
+// vertices.
 // Throws InputError naming the file and the element ("face 17"), and for
 // ASCII the line, on bad input: a header readPlyHeader refuses, a
 // truncated body, corner counts below 3 or above the vertex count, indices
