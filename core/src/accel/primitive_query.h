@@ -69,6 +69,8 @@ class PrimitiveQuery {
   const Ray& ray() const { return ray_; }
   TriangleKernel kernel() const { return kernel_; }
   double tMin() const { return tMin_; }
+  // Whether the ray was spawned from a triangle (it starts on a mesh).
+  bool startsOnTriangle() const { return startTriangle_ != 0xffffffffu; }
 
   void offerTriangle(std::uint32_t mesh, std::uint32_t tri, ClosestHit& closest) const {
     ++counters_.triangleTests;

@@ -302,6 +302,24 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
   return SlabRay(ray, slabPadding(false, ray.origin, sceneScale_));
 }
 
+// A ray spawned from a face that lies on the triangle BVH's box (a box, a
+// CAD part, a wall) starts outside that box by the spawn offset, a rounding's
+// width. The float boxes are padded far wider, so it would enter the root
+// and filter the blocks around its start for nothing. The box's exact double
+// test (conservative, as --accel aabb's) turns it away first; a ray that
+// starts inside the box, as most spawned rays do, pays six comparisons.
+[[gnu::always_inline]] inline bool SceneBvh::leavesTheMeshBvhBox(const PrimitiveQuery& query,
+                                                                 double tLimit) const {
+  if (!query.startsOnTriangle()) return false;
+  const Aabb& box = meshBvh_.triangles.bounds();
+  const Vec3& o = query.ray().origin;
+  if (o.x >= box.min.x && o.x <= box.max.x && o.y >= box.min.y && o.y <= box.max.y &&
+      o.z >= box.min.z && o.z <= box.max.z)
+    return false;
+  double tEnter, tExit;
+  return !intersectSlabs(box, RayInverse(query.ray()), query.tMin(), tLimit, tEnter, tExit);
+}
+
 template <typename Search>
 [[gnu::always_inline]] inline bool SceneBvh::tracePlanes(Search& search) const {
   for (std::uint32_t i = 0; i < scene_.planes.size(); ++i)
@@ -330,6 +348,7 @@ bool SceneBvh::traceBounded(const SlabRay& ray, Search& search, Counters& counte
         if (search.triangle(mesh, t)) return true;
       return false;
     }
+    if (leavesTheMeshBvhBox(query, search.limit())) return false;
     const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
       LazyBlockRay blockRay(query.ray(), meshBvh_.frame, query.kernel());
       const auto blockLeaf = [&](std::uint32_t first, std::uint32_t n) MESHTRACE_INLINE_LEAF {
@@ -399,6 +418,10 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
             }
       return done;
     }
+    for (int r = 0; r < kPacketSize; ++r)
+      if (rays >> r & 1 && leavesTheMeshBvhBox(searches[r].query(), searches[r].limit()))
+        rays &= ~(1u << r);
+    if (rays == 0) return done;
     const auto traverseMeshes = [&](const auto& locate) MESHTRACE_INLINE_LEAF {
       PacketBlockRays blockRay(searches, meshBvh_.frame);
       const auto blockLeaf = [&](std::uint32_t first, std::uint32_t n,

@@ -70,6 +70,9 @@ class SceneBvh {
   // The infinite planes, which have no box: tested before the tree.
   template <typename Search>
   bool tracePlanes(Search& search) const;
+  // Whether a ray spawned from a triangle turns away from the triangle BVH
+  // before its float boxes (below).
+  bool leavesTheMeshBvhBox(const PrimitiveQuery& query, double tLimit) const;
   // trace() with the ray's slab ray already made.
   template <typename Search>
   bool traceBounded(const SlabRay& ray, Search& search, Counters& counters) const;
