@@ -154,7 +154,7 @@ class BinaryPlyReader {
     const std::size_t triangles = mesh_.triangles.size() + static_cast<std::size_t>(e.count);
     if (triangles > mesh_.triangles.capacity())
       mesh_arrays::growTriangles(mesh_, budget_, triangles, file_);
-    std::size_t cornerList = 0;  // handles() saw that there is one
+    std::size_t cornerList = 0;  // readablePlyLayout saw that there is one
     while (!isPlyCornerList(e, e.properties[cornerList])) ++cornerList;
     std::vector<std::uint32_t> corners;
     for (std::uint64_t i = 0; i < e.count; ++i) {
