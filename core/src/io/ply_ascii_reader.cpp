@@ -28,15 +28,20 @@ constexpr std::int64_t kMaxListItems = std::int64_t{1} << 31;
 // What a property's values are to the reader.
 enum class Role { Other, X, Y, Z, Corners };
 
+// What an element's records are to the reader.
+enum class ElementKind { Other, Vertex, Face };
+
 // An element as its lines are read: where its records start among the
-// file's lines, and what each of its properties is.
+// file's lines, what they are, and what each of its properties is (told
+// once from the header, not from the names on every line).
 struct ElementLayout {
   const PlyElement* element;
+  ElementKind kind;
   std::int64_t firstLine;    // counting the body's non-empty lines from 0
   std::int64_t facesBefore;  // in the face elements before it
   std::vector<Role> roles;
 
-  bool isFace() const { return element->name == "face"; }
+  bool isFace() const { return kind == ElementKind::Face; }
   // The number in the file of the face or other record on body line `line`:
   // faces are numbered on from one face element to the next.
   std::int64_t recordOf(std::int64_t line) const {
@@ -89,10 +94,14 @@ class AsciiPlyReader {
   void layOut() {
     for (const PlyElement& e : header_.elements) {
       if (e.properties.empty()) continue;
-      ElementLayout layout{&e, lines_, faces_, {}};
+      const ElementKind kind = e.name == "vertex" ? ElementKind::Vertex
+                               : e.name == "face"   ? ElementKind::Face
+                                                    : ElementKind::Other;
+      ElementLayout layout{&e, kind, lines_, faces_, {}};
       for (const PlyProperty& p : e.properties) {
         Role role = Role::Other;
-        if (e.name == "vertex" && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
+        if (kind == ElementKind::Vertex && p.name.size() == 1 && p.name[0] >= 'x' &&
+            p.name[0] <= 'z')
           role = static_cast<Role>(static_cast<int>(Role::X) + (p.name[0] - 'x'));
         if (isPlyCornerList(e, p)) role = Role::Corners;
         layout.roles.push_back(role);
@@ -169,7 +178,7 @@ class AsciiPlyReader {
     if (tokens.next(token))
       fail(": " + quoted(token) + " after its " + std::to_string(e.properties.size()) +
            (e.properties.size() == 1 ? " property" : " properties"));
-    if (e.name == "vertex")
+    if (layout.kind == ElementKind::Vertex)
       mesh_.vertices[static_cast<std::size_t>(index)] = vertex;
     else if (layout.isFace())
       appendPolygonTriangles(c.corners, c.triangles, &c.polygons);
