@@ -498,7 +498,7 @@ int main(int argc, char** argv) {
   cli.add_option("--make-knot", makeKnot, "Write a generated torus knot OFF, and exit");
   cli.add_option("--triangles", knotTriangles, "Triangles of --make-knot")->capture_default_str();
   cli.add_option("--mesh-load", meshLoad,
-                 "Time loading MESH.off and the same mesh as binary PLY, and exit");
+                 "Time loading MESH.off and the same mesh as PLY and STL, and exit");
   cli.add_flag("--crossover", crossover, "Measure the mesh size at which a BVH pays, and exit");
   // The child process of a whole-run measurement (full_run.h).
   std::string fullRun, image;

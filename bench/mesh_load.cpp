@@ -41,47 +41,51 @@ double median(std::vector<double> v) {
 void printMeshLoadTimes(const std::filesystem::path& off) {
   formats::registerOpenMeshFormats();
   const MeshData mesh = readOff(off);
-  auto ply = off;
-  ply.replace_extension(".ply");
+  const auto sibling = [&](const std::string& suffix) {
+    return off.parent_path() / (off.stem().string() + suffix);
+  };
   // Float coordinates, as scanners and exporters write them.
+  const auto ply = sibling(".ply");
   if (!std::filesystem::exists(ply)) writeBinaryPly(mesh, ply, PlyCoordinates::Float);
-  // OFF's numbers, as ASCII PLY.
-  auto asciiPly = off;
-  asciiPly.replace_filename(off.stem().string() + "-ascii.ply");
+  // OFF's numbers, as ASCII PLY and ASCII STL.
+  const auto asciiPly = sibling("-ascii.ply");
   if (!std::filesystem::exists(asciiPly)) writeAsciiPly(mesh, asciiPly);
+  const auto asciiStl = sibling("-ascii.stl");
+  if (!std::filesystem::exists(asciiStl)) writeAsciiStl(mesh, asciiStl);
   // Binary STL: each facet's corners as floats.
-  auto stl = off;
-  stl.replace_extension(".stl");
+  const auto stl = sibling(".stl");
   if (!std::filesystem::exists(stl)) writeMesh(mesh, stl);
-  std::vector<double> offMs, plyMs, openMeshMs, asciiMs, asciiOpenMeshMs, stlMs, stlOpenMeshMs;
+
+  struct Row {
+    const char* name;
+    std::filesystem::path file;
+    MeshReader read;  // OpenMesh's: the reader PLY and STL had before the core read them
+    std::vector<double> ms;
+  };
+  const MeshReader ours = readMesh;
+  const MeshReader openMesh = formats::readOpenMeshFile;
+  std::vector<Row> rows = {{"OFF (ours)", off, ours, {}},
+                           {"binary PLY (ours)", ply, ours, {}},
+                           {"binary PLY (OpenMesh)", ply, openMesh, {}},
+                           {"ASCII PLY (ours)", asciiPly, ours, {}},
+                           {"ASCII PLY (OpenMesh)", asciiPly, openMesh, {}},
+                           {"binary STL (ours)", stl, ours, {}},
+                           {"binary STL (OpenMesh)", stl, openMesh, {}},
+                           {"ASCII STL (ours)", asciiStl, ours, {}},
+                           {"ASCII STL (OpenMesh)", asciiStl, openMesh, {}}};
   const std::size_t n = mesh.triangles.size();
-  for (int round = 0; round < kRounds; ++round) {  // interleaved: all see the same load
-    offMs.push_back(loadMs(off, n));
-    plyMs.push_back(loadMs(ply, n));
-    asciiMs.push_back(loadMs(asciiPly, n));
-    // The reader PLY and STL had before the core read them.
-    openMeshMs.push_back(loadMs(ply, n, formats::readOpenMeshFile));
-    asciiOpenMeshMs.push_back(loadMs(asciiPly, n, formats::readOpenMeshFile));
-    stlMs.push_back(loadMs(stl, n));
-    stlOpenMeshMs.push_back(loadMs(stl, n, formats::readOpenMeshFile));
+  for (int round = 0; round < kRounds; ++round)  // interleaved: all see the same load
+    for (Row& row : rows) row.ms.push_back(loadMs(row.file, n, row.read));
+  std::printf("\n### Loading %s: %zu triangles, median of %d loads\n\n", off.stem().c_str(), n,
+              kRounds);
+  std::printf("| file | bytes | load ms | GB/s | against OFF |\n|---|---|---|---|---|\n");
+  const double offMs = median(rows.front().ms);
+  for (const Row& row : rows) {
+    const auto bytes = static_cast<std::uintmax_t>(std::filesystem::file_size(row.file));
+    const double ms = median(row.ms);
+    std::printf("| %s | %ju | %.1f | %.2f | %.2f |\n", row.name, bytes, ms,
+                static_cast<double>(bytes) / ms * 1e-6, ms / offMs);
   }
-  const double a = median(offMs), b = median(plyMs), c = median(openMeshMs);
-  const double d = median(asciiMs), e = median(asciiOpenMeshMs);
-  std::printf("\n### Loading %s: %zu triangles, median of %d loads\n\n", off.stem().c_str(),
-              mesh.triangles.size(), kRounds);
-  std::printf("| file | bytes | load ms | against OFF |\n|---|---|---|---|\n");
-  std::printf("| OFF (ours) | %ju | %.1f | 1.00 |\n",
-              static_cast<std::uintmax_t>(std::filesystem::file_size(off)), a);
-  const auto plyBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(ply));
-  std::printf("| binary PLY (ours) | %ju | %.1f | %.2f |\n", plyBytes, b, b / a);
-  std::printf("| binary PLY (OpenMesh) | %ju | %.1f | %.2f |\n", plyBytes, c, c / a);
-  const auto asciiBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(asciiPly));
-  std::printf("| ASCII PLY (ours) | %ju | %.1f | %.2f |\n", asciiBytes, d, d / a);
-  std::printf("| ASCII PLY (OpenMesh) | %ju | %.1f | %.2f |\n", asciiBytes, e, e / a);
-  const double g = median(stlMs), h = median(stlOpenMeshMs);
-  const auto stlBytes = static_cast<std::uintmax_t>(std::filesystem::file_size(stl));
-  std::printf("| binary STL (ours) | %ju | %.1f | %.2f |\n", stlBytes, g, g / a);
-  std::printf("| binary STL (OpenMesh) | %ju | %.1f | %.2f |\n", stlBytes, h, h / a);
 }
 
 }  // namespace meshtrace::bench

@@ -35,8 +35,8 @@ CornerWelder::CornerWelder(MeshData& mesh, MemoryBudget& budget, const std::file
 
 CornerWelder::~CornerWelder() { budget_.release(slots_.size() * sizeof(std::uint32_t)); }
 
-std::uint32_t CornerWelder::weld(const Vec3& p) {
-  for (std::size_t i = hashOf(p) & mask_;; i = (i + 1) & mask_) {
+std::uint32_t CornerWelder::weld(const Vec3& p, std::uint64_t hash) {
+  for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
     const std::uint32_t slot = slots_[i];
     if (slot == 0) {
       const auto index = static_cast<std::uint32_t>(mesh_.vertices.size());
@@ -48,6 +48,33 @@ std::uint32_t CornerWelder::weld(const Vec3& p) {
       return index;
     }
     if (mesh_.vertices[slot - 1] == p) return slot - 1;
+  }
+}
+
+void CornerWelder::addFacets(std::span<const Vec3> corners) {
+  // Welding a corner reads its table slot, then the vertex the slot names:
+  // two dependent reads far apart, each a likely cache miss in a large
+  // mesh. The slot is prefetched kSlotAhead corners ahead and the vertex
+  // kVertexAhead ahead (its slot then in the cache), so that the misses of
+  // several corners overlap instead of following one another. A prefetch
+  // only guesses: a slot taken or a table grown meanwhile makes it useless,
+  // not wrong.
+  constexpr std::size_t kSlotAhead = 64, kVertexAhead = 32;
+  hashes_.resize(corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) hashes_[i] = hashOf(corners[i]);
+  TriangleIndices t;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    if (i + kSlotAhead < corners.size())
+      __builtin_prefetch(&slots_[hashes_[i + kSlotAhead] & mask_]);
+    if (i + kVertexAhead < corners.size()) {
+      const std::uint32_t slot = slots_[hashes_[i + kVertexAhead] & mask_];
+      if (slot != 0) __builtin_prefetch(&mesh_.vertices[slot - 1]);
+    }
+    t[i % 3] = weld(corners[i], hashes_[i]);
+    if (i % 3 < 2 || t[0] == t[1] || t[0] == t[2] || t[1] == t[2]) continue;
+    if (mesh_.triangles.size() == mesh_.triangles.capacity())
+      mesh_arrays::growTriangles(mesh_, budget_, 2 * mesh_.triangles.capacity() + 1, file_);
+    mesh_.triangles.push_back(t);
   }
 }
 

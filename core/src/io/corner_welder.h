@@ -5,6 +5,7 @@
 // coordinates compare equal, so -0 and +0 weld.
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include "meshtrace/geometry/mesh.h"
@@ -22,10 +23,14 @@ class CornerWelder {
   CornerWelder(const CornerWelder&) = delete;
   CornerWelder& operator=(const CornerWelder&) = delete;
 
-  // The index of the vertex at `p` (finite coordinates).
-  std::uint32_t weld(const Vec3& p);
+  // Welds the corners of facets, three at a time (finite coordinates), and
+  // appends each facet's triangle to the mesh, unless two of its corners
+  // weld into one vertex: a facet without area is left out.
+  void addFacets(std::span<const Vec3> corners);
 
  private:
+  // The index of the vertex at `p`.
+  std::uint32_t weld(const Vec3& p, std::uint64_t hash);
   void growTable();
 
   MeshData& mesh_;
@@ -35,6 +40,7 @@ class CornerWelder {
   // free. Kept at most half full.
   std::vector<std::uint32_t> slots_;
   std::size_t mask_ = 0;
+  std::vector<std::uint64_t> hashes_;  // of the corners addFacets welds
 };
 
 }  // namespace meshtrace

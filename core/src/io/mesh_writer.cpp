@@ -53,16 +53,20 @@ std::string objText(const MeshData& mesh) {
   return out;
 }
 
+// The unit normal STL lists with a facet (zero for a facet without area).
+Vec3 facetNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = glm::cross(b - a, c - a);
+  const double length = glm::length(n);
+  return length > 0 ? n / length : Vec3(0.0);
+}
+
 std::string binaryStl(const MeshData& mesh) {
   std::string out(80, '\0');
   std::memcpy(out.data(), "binary STL", 10);  // the header's text is free
   appendLittleEndian(out, static_cast<std::uint32_t>(mesh.triangles.size()));
   for (const TriangleIndices& t : mesh.triangles) {
     const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    const Vec3 n = glm::cross(b - a, c - a);
-    const double length = glm::length(n);
-    const Vec3 normal = length > 0 ? n / length : Vec3(0.0);
-    for (const Vec3& p : {normal, a, b, c})
+    for (const Vec3& p : {facetNormal(a, b, c), a, b, c})
       for (int k = 0; k < 3; ++k) appendLittleEndian(out, static_cast<float>(p[k]));
     appendLittleEndian(out, std::uint16_t{0});  // attribute byte count
   }
@@ -84,6 +88,23 @@ void writeAsciiPly(const MeshData& mesh, const std::filesystem::path& path) {
                     std::to_string(mesh.triangles.size()) +
                     "\nproperty list uchar int vertex_indices\nend_header\n";
   appendVerticesAndFaces(out, mesh);
+  writeFileAtomically(path, out);
+}
+
+void writeAsciiStl(const MeshData& mesh, const std::filesystem::path& path) {
+  std::string out = "solid " + path.stem().string() + "\n";
+  for (const TriangleIndices& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    out += "facet normal ";
+    appendPoint(out, facetNormal(a, b, c), " ");
+    out += "outer loop\n";
+    for (const Vec3& p : {a, b, c}) {
+      out += "vertex ";
+      appendPoint(out, p, " ");
+    }
+    out += "endloop\nendfacet\n";
+  }
+  out += "endsolid " + path.stem().string() + "\n";
   writeFileAtomically(path, out);
 }
 

@@ -63,6 +63,9 @@ class TokenReader {
  public:
   explicit TokenReader(std::string_view line) : line_(line) {}
   bool next(std::string_view& token);
+  // The first byte of the next token, which is not read; '\0' at the end of
+  // the line.
+  char peek() { return skipSpaces() ? line_[pos_] : '\0'; }
   // The next token as parseInt64 or parseDouble would read it, parsed
   // where it stands rather than found first and parsed after: a mesh's
   // text is mostly numbers. `token` is set to the token read, unless the

@@ -74,6 +74,17 @@ TEST_F(MeshWriter, OffAndPlyKeepEveryCoordinateExactly) {
   expectSameBits(readBack(ascii), mesh, "ASCII PLY");
 }
 
+// ASCII STL holds any double too: its corners weld back into the mesh's
+// vertices, in the order the triangles first use them.
+TEST_F(MeshWriter, AsciiStlKeepsEveryCornerExactly) {
+  const MeshData mesh = makeTorusKnot(Vec3(0.1, 1.3, 0.0), 0.45, 2, 3, 0.42, 64, 12);
+  const auto file = test::scratchDir() / "knot.stl";
+  writeAsciiStl(mesh, file);
+  const MeshData got = readBack(file);
+  expectSameTriangles(got, mesh, "ASCII STL");
+  EXPECT_EQ(got.vertices.size(), mesh.vertices.size());
+}
+
 TEST_F(MeshWriter, FloatPlyRoundsEachCoordinateToNearest) {
   const MeshData mesh = makeIcosphere(Vec3(0.3, 0.2, 0.1), 0.9, 1);
   const auto file = test::scratchDir() / "ball.ply";

@@ -165,5 +165,35 @@ TEST(Stl, RefusesABadFileNamingTheFacetAndLine) {
   EXPECT_EQ(readStlBytes("solid s\n" + good + "endsolid s\n").triangles.size(), 1u);
 }
 
+// The words of an ASCII file are found in parallel pieces and their places
+// found again only for a message: a bad word far into a large file is
+// named at its own line and facet.
+TEST(Stl, NamesABadWordFarIntoALargeFileAtItsLine) {
+  constexpr int kFacets = 20000, kBad = 15000, kLinesAFacet = 7;
+  const auto fileWith = [&](const std::string& badCorner) {
+    std::string text = "solid strip\n";
+    for (int i = 0; i < kFacets; ++i) {
+      const std::string x = std::to_string(i);
+      text += asciiFacet(x + " 0 0", i == kBad ? badCorner : x + " 1 0", x + ".5 0 1");
+    }
+    return text + "endsolid strip\n";
+  };
+  ASSERT_GT(fileWith("0 0 0").size(), 4 * (std::size_t{1} << 18));  // several pieces
+  EXPECT_EQ(readStlBytes(fileWith("0 0 0")).triangles.size(), std::size_t{kFacets});
+  // The solid's line, the facets before, then the facet's fourth line.
+  const std::string line = "mesh.stl:" + std::to_string(1 + kLinesAFacet * kBad + 4);
+  const std::string facet = "facet " + std::to_string(kBad);
+  for (const auto& [corner, mentions] :
+       std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"1 x 0", {line, facet, "'x' is not a number"}},
+           {"1 inf 0", {line, facet, "vertex 1", "non-finite", "'inf'"}},
+           {"1 0 0 0", {line, facet, "expected vertex, found '0'"}},
+           {std::string("1 \0 0", 5), {line, "NUL"}}}) {
+    const std::string message = errorOf(fileWith(corner));
+    for (const std::string& part : mentions)
+      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  }
+}
+
 }  // namespace
 }  // namespace meshtrace

@@ -15,6 +15,10 @@ void writeOff(const MeshData& mesh, const std::filesystem::path& path);
 // "3 a b c" ("list uchar int vertex_indices").
 void writeAsciiPly(const MeshData& mesh, const std::filesystem::path& path);
 
+// ASCII STL, one solid: each triangle's normal and corners in double, read
+// back exactly.
+void writeAsciiStl(const MeshData& mesh, const std::filesystem::path& path);
+
 // Binary little-endian PLY: a vertex element of x, y, z and a face element
 // of "list uchar int vertex_indices". Double coordinates read back exactly;
 // float ones are what scanners and exporters write, rounded to nearest.
