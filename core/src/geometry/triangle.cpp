@@ -141,9 +141,11 @@ bool watertight(const Setup<Real>& r, const V3<Real>& a, const V3<Real>& b, cons
   return accept(t, v * inv, w * inv, out);
 }
 
+// Fills `s` where it stays: built elsewhere and copied in, its fields,
+// written one at a time, were read back by wider loads that had to wait
+// for the stores to land (a failed store-to-load forward).
 template <typename Real>
-Setup<Real> makeSetup(const Ray& ray) {
-  Setup<Real> s;
+void setUp(const Ray& ray, Setup<Real>& s) {
   s.origin = V3<Real>(ray.origin);
   s.direction = V3<Real>(ray.direction);
   const V3<Real> d = glm::abs(s.direction);
@@ -155,7 +157,6 @@ Setup<Real> makeSetup(const Ray& ray) {
   s.sx = dir[s.kx] / dir[s.kz];
   s.sy = dir[s.ky] / dir[s.kz];
   s.sz = 1 / dir[s.kz];
-  return s;
 }
 
 template <typename Real>
@@ -173,9 +174,9 @@ bool dispatch(TriangleTest test, const Setup<Real>& r, const V3<Real>& a, const 
 
 TriangleRay::TriangleRay(const Ray& ray, TriangleKernel kernel) : kernel_(kernel) {
   if (kernel.precision == Precision::Double)
-    double_ = makeSetup<double>(ray);
+    setUp(ray, double_);
   else
-    single_ = makeSetup<float>(ray);
+    setUp(ray, single_);
 }
 
 bool TriangleRay::intersect(const Vec3& a, const Vec3& b, const Vec3& c, double tMin, double tMax,
