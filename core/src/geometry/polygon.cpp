@@ -318,6 +318,7 @@ PolygonTiling tileNonConvexPolygons(std::span<const Vec3> vertices,
         PolygonScratch s;
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
           const PolygonFace& face = polygons[k];
+          if (face.corners < 4) continue;  // a face left out: no triangles to tile
           const std::span<TriangleIndices> own =
               triangles.subspan(face.firstTriangle, face.corners - 2);
           recoverCorners(own, face.corners, s);

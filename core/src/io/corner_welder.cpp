@@ -51,7 +51,7 @@ std::uint32_t CornerWelder::weld(const Vec3& p, std::uint64_t hash) {
   }
 }
 
-void CornerWelder::addFacets(std::span<const Vec3> corners) {
+void CornerWelder::addFacets(std::span<const Vec3> corners, std::uint64_t firstFacet) {
   // Welding a corner reads its table slot, then the vertex the slot names:
   // two dependent reads far apart, each a likely cache miss in a large
   // mesh. The slot is prefetched kSlotAhead corners ahead and the vertex
@@ -71,11 +71,24 @@ void CornerWelder::addFacets(std::span<const Vec3> corners) {
       if (slot != 0) __builtin_prefetch(&mesh_.vertices[slot - 1]);
     }
     t[i % 3] = weld(corners[i], hashes_[i]);
-    if (i % 3 < 2 || t[0] == t[1] || t[0] == t[2] || t[1] == t[2]) continue;
+    if (i % 3 < 2) continue;
+    if (t[0] == t[1] || t[0] == t[2] || t[1] == t[2]) {
+      leaveOut(firstFacet + i / 3);
+      continue;
+    }
     if (mesh_.triangles.size() == mesh_.triangles.capacity())
       mesh_arrays::growTriangles(mesh_, budget_, 2 * mesh_.triangles.capacity() + 1, file_);
     mesh_.triangles.push_back(t);
   }
+}
+
+void CornerWelder::leaveOut(std::uint64_t facet) {
+  if (mesh_.polygons.size() == mesh_.polygons.capacity())
+    mesh_arrays::growPolygons(mesh_, budget_, 2 * mesh_.polygons.capacity() + 1, file_);
+  // Facet numbers fit 32 bits as triangle numbers do: a file of more is
+  // refused by its size.
+  mesh_.polygons.push_back(
+      {static_cast<std::uint32_t>(mesh_.triangles.size()), 2, static_cast<std::uint32_t>(facet)});
 }
 
 void CornerWelder::growTable() {

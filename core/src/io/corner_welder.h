@@ -25,12 +25,17 @@ class CornerWelder {
 
   // Welds the corners of facets, three at a time (finite coordinates), and
   // appends each facet's triangle to the mesh, unless two of its corners
-  // weld into one vertex: a facet without area is left out.
-  void addFacets(std::span<const Vec3> corners);
+  // weld into one vertex: a facet without area is left out, and recorded
+  // as a face of two corners (PolygonFace) so that the faces after it keep
+  // their file's numbers. The first facet is facet `firstFacet` of the
+  // file.
+  void addFacets(std::span<const Vec3> corners, std::uint64_t firstFacet);
 
  private:
   // The index of the vertex at `p`.
   std::uint32_t weld(const Vec3& p, std::uint64_t hash);
+  // Records facet `facet` as left out, before the next triangle.
+  void leaveOut(std::uint64_t facet);
   void growTable();
 
   MeshData& mesh_;

@@ -41,6 +41,11 @@ void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
   grow(mesh.triangles, budget, capacity, "triangles", file);
 }
 
+void growPolygons(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
+                  const std::filesystem::path& file) {
+  grow(mesh.polygons, budget, capacity, "face records", file);
+}
+
 void appendTriangles(MeshData& mesh, MemoryBudget& budget, const MeshChunk& chunk,
                      std::uint32_t firstFace, const std::filesystem::path& file) {
   const std::size_t triangles = mesh.triangles.size() + chunk.triangles.size();

@@ -30,6 +30,10 @@ void growVertices(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
 void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                    const std::filesystem::path& file);
 
+// Room for `capacity` face records (MeshData::polygons), planned alike.
+void growPolygons(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
+                  const std::filesystem::path& file);
+
 // What a piece of a text mesh (OFF, OBJ) holds whatever the format, as it
 // goes through text::streamPieces: its lines' place in the file and the
 // triangles its faces were cut into.

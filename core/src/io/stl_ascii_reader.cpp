@@ -191,7 +191,7 @@ class Grammar {
 
   // Welds the corners of the facets read since the last call.
   void weldFacets() {
-    welder_.addFacets(corners_);
+    welder_.addFacets(corners_, facet_ - corners_.size() / 3);
     corners_.clear();
   }
 

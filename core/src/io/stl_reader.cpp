@@ -57,7 +57,7 @@ class BinaryStl {
         }
       }
       if (corners.size() == 3 * kBatchFacets || f + 1 == facets_) {
-        welder.addFacets(corners);
+        welder.addFacets(corners, f + 1 - corners.size() / 3);
         corners.clear();
       }
     }

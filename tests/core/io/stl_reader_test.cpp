@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "meshtrace/geometry/mesh.h"
 #include "support/files.h"
 #include "support/input_errors.h"
 #include "support/paths.h"
@@ -57,6 +58,23 @@ std::string asciiFacet(const std::string& a, const std::string& b, const std::st
          "\n      vertex " + c + "\n    endloop\n  endfacet\n";
 }
 
+// An ASCII file of `facets`, whose coordinates are integers: each written
+// as one, -0 as such.
+std::string asciiStl(const std::vector<Facet>& facets) {
+  std::string text = "solid integers\n";
+  for (const Facet& f : facets) {
+    std::string corners[3];
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) {
+        if (k > 0) corners[c] += ' ';
+        corners[c] +=
+            std::signbit(f[c][k]) ? std::string("-0") : std::to_string(static_cast<int>(f[c][k]));
+      }
+    text += asciiFacet(corners[0], corners[1], corners[2]);
+  }
+  return text + "endsolid integers\n";
+}
+
 // Two squares sharing an edge, each of two facets, and a facet whose
 // corners weld into two vertices: the six vertices numbered as they first
 // occur, -0 welded with +0, the flat facet left out.
@@ -77,19 +95,7 @@ TEST(Stl, BinaryCornersWeldIntoTheVerticesOfAnIndexedMesh) {
 }
 
 TEST(Stl, AsciiCornersWeldAlikeAndKeepTheirDoubles) {
-  std::string text = "solid two squares\n";
-  for (const Facet& f : kSquares) {
-    // The corners' integer coordinates, -0 written as such.
-    std::string corners[3];
-    for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < 3; ++k) {
-        if (k > 0) corners[c] += ' ';
-        corners[c] +=
-            std::signbit(f[c][k]) ? std::string("-0") : std::to_string(static_cast<int>(f[c][k]));
-      }
-    text += asciiFacet(corners[0], corners[1], corners[2]);
-  }
-  text += "endsolid two squares\n";
+  const std::string text = asciiStl(kSquares);
   const MeshData mesh = readStlBytes(text);
   EXPECT_EQ(mesh.vertices, kWelded);
   EXPECT_EQ(mesh.triangles, kTriangles);
@@ -163,6 +169,42 @@ TEST(Stl, RefusesABadFileNamingTheFacetAndLine) {
       EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
   }
   EXPECT_EQ(readStlBytes("solid s\n" + good + "endsolid s\n").triangles.size(), 1u);
+}
+
+// Facets left out for having no area keep the file's numbering: each
+// triangle leads back to its own facet, in either encoding.
+TEST(Stl, TrianglesKeepTheirFacetNumbersPastFacetsLeftOut) {
+  const Facet good0 = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const Facet good1 = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const Facet good2 = {{1, 0, 0}, {2, 0, 0}, {1, 1, 0}};
+  const Facet flat = {{0, 0, 0}, {1, 0, 0}, {-0.0, 0, 0}};
+  const std::vector<Facet> facets = {flat, good0, flat, good1, flat, flat, good2, flat};
+  const std::vector<std::uint32_t> kept = {1, 3, 6};  // the file's numbers
+  const auto expectKept = [](const std::string& bytes, const std::vector<std::uint32_t>& numbers) {
+    const Mesh mesh("mesh.stl", readStlBytes(bytes), Shading::Flat, Material{});
+    ASSERT_EQ(mesh.triangles().size(), numbers.size());
+    for (std::uint32_t t = 0; t < numbers.size(); ++t) {
+      EXPECT_EQ(mesh.faceOf(t).face, numbers[t]) << "triangle " << t;
+      EXPECT_EQ(mesh.faceOf(t).corners, 3u);
+    }
+  };
+  expectKept(binaryStl(facets), kept);
+  expectKept(asciiStl(facets), kept);
+
+  // Across the batches the corners are welded in: a strip of facets, every
+  // 1000th left out.
+  std::vector<Facet> strip;
+  std::vector<std::uint32_t> stripKept;
+  for (std::uint32_t i = 0; i < 13000; ++i) {
+    const double x = i;
+    if (i % 1000 == 999) {
+      strip.push_back({{x, 0, 0}, {x, 0, 0}, {x, 1, 0}});
+    } else {
+      strip.push_back({{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}});
+      stripKept.push_back(i);
+    }
+  }
+  expectKept(binaryStl(strip), stripKept);
 }
 
 // The words of an ASCII file are found in parallel pieces and their places

@@ -21,9 +21,11 @@ Shading parseShading(std::string_view name);
 
 using TriangleIndices = std::array<std::uint32_t, 3>;
 
-// A face of four corners or more among a mesh's triangles: face number
-// `face` of the file, whose corners - 2 triangles start at firstTriangle.
-// (Triangle indices fit 32 bits.)
+// A face of the file that is not one triangle of the mesh: face number
+// `face`, whose corners - 2 triangles start at firstTriangle. A polygon
+// has four corners or more; a face of two (an STL facet whose corners
+// weld into two points) has no triangle: it was left out, and the faces
+// after it keep their numbers. (Triangle indices fit 32 bits.)
 struct PolygonFace {
   std::uint32_t firstTriangle = 0;
   std::uint32_t corners = 0;
@@ -38,9 +40,9 @@ struct PolygonFace {
 struct MeshData {
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
-  // The faces of four corners or more, in triangle order: what leads from
-  // a triangle back to its face in the file (Mesh::faceOf). Empty for a
-  // mesh of triangles.
+  // The faces that are not one triangle each (polygons, faces left out),
+  // in triangle order: what leads from a triangle back to its face in the
+  // file (Mesh::faceOf). Empty for a mesh of triangles, each kept.
   std::vector<PolygonFace> polygons;
   // Faces of the file that no triangulation tiles (they cross themselves):
   // their triangles may cover area outside them (polygon.h).

@@ -17,7 +17,8 @@ namespace meshtrace {
 // "endfacet"), then "endsolid" and its name, and any further solids alike.
 // Corners are equal when their coordinates compare equal (-0 and +0 too).
 // A facet two of whose corners weld into one vertex has no area and is
-// left out. Facet normals are not read. Throws InputError naming the file
+// left out, recorded in MeshData::polygons so that the facets after it
+// keep their numbers (Mesh::faceOf). Facet normals are not read. Throws InputError naming the file
 // and the facet (and for ASCII the line) on bad input: a file neither
 // binary nor ASCII, an unexpected word, a value that is no number, a
 // non-finite coordinate, a file that ends inside a solid. The arrays are
