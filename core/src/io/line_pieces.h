@@ -28,6 +28,17 @@ class LinePiece {
   bool nulAfter_ = false;
 };
 
+// A piece as a pipeline's stages see it (piece_pipeline.h), whatever a
+// reader adds to it: its lines and their place in the file.
+struct PieceChunk {
+  LinePiece piece;
+  std::size_t begin = 0;       // where its lines start in the piece
+  std::size_t lines = 0;       // all its lines
+  std::size_t lineBefore = 0;  // the number of the line before its first
+
+  std::string_view text() const { return piece.text().substr(begin); }
+};
+
 class LinePieces {
  public:
   // Pieces of about `pieceBytes` (more for a longer line).

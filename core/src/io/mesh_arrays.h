@@ -34,20 +34,14 @@ void growTriangles(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
 void growPolygons(MeshData& mesh, MemoryBudget& budget, std::size_t capacity,
                   const std::filesystem::path& file);
 
-// What a piece of a text mesh (OFF, OBJ) holds whatever the format, as it
-// goes through text::streamPieces: its lines' place in the file and the
-// triangles its faces were cut into.
-struct MeshChunk {
-  text::LinePiece piece;
-  std::size_t begin = 0;       // where its lines start in the piece
-  std::size_t lines = 0;       // all its lines
-  std::size_t lineBefore = 0;  // the number of the line before its first
+// What a piece of a text mesh (OFF, OBJ, ASCII PLY) holds whatever the
+// format, as it goes through text::streamPieces: the triangles its faces
+// were cut into.
+struct MeshChunk : text::PieceChunk {
   std::vector<TriangleIndices> triangles;
   std::vector<PolygonFace> polygons;   // among `triangles`, numbered from its first face
   std::vector<std::uint32_t> corners;  // of the face being read
   std::exception_ptr error;            // of its first bad line
-
-  std::string_view text() const { return piece.text().substr(begin); }
 };
 
 // Appends `chunk`'s triangles and polygon records to `mesh`, its first face

@@ -22,12 +22,12 @@ namespace meshtrace::text {
 // The bytes of a piece, a little over which a pipeline's pieces are read.
 inline constexpr std::size_t kPieceBytes = std::size_t{1} << 18;
 
-// Streams `pieces` through the stages, each a callable on a Chunk&, which
-// holds `LinePiece piece` and `std::size_t begin` (where its lines start in
-// the piece). `first`, if any, is the first chunk, its piece already read
-// (a header may have taken its start). `gather(chunk, done)` sets `done`
-// to end the reading (after an error); it also leaves the chunk ready for
-// another piece, as chunks are reused rather than allocated again.
+// Streams `pieces` through the stages, each a callable on a Chunk&, a
+// PieceChunk or one derived from it. `first`, if any, is the first chunk,
+// its piece already read (a header may have taken its start).
+// `gather(chunk, done)` sets `done` to end the reading (after an error); it
+// also leaves the chunk ready for another piece, as chunks are reused
+// rather than allocated again.
 template <typename Chunk, typename Count, typename Number, typename Parse, typename Gather>
 void streamPieces(LinePieces& pieces, std::unique_ptr<Chunk> first, Count&& count, Number&& number,
                   Parse&& parse, Gather&& gather) {

@@ -55,15 +55,9 @@ std::string spelling(Word word) {
   return std::string(kKeywords[static_cast<std::size_t>(word) - 1]);
 }
 
-struct StlChunk {
-  text::LinePiece piece;
-  std::size_t begin = 0;  // always 0: no header shares the first piece
-  std::size_t lines = 0;
-  std::size_t lineBefore = 0;  // the number of the line before its first
+struct StlChunk : text::PieceChunk {  // no header shares the first piece: begin is 0
   std::vector<Word> words;
   std::vector<double> numbers;  // the Number words' values, in order
-
-  std::string_view text() const { return piece.text().substr(begin); }
 };
 
 // Calls visit(word, value, text, line) for the words of `text` in order,
