@@ -45,13 +45,6 @@ std::size_t buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
   return copies;
 }
 
-// Set bits of a 4-bit lane mask (std::popcount is a library call without
-// the popcnt instruction of later x86-64 levels).
-int laneCount(int mask) {
-  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-  return kCount[mask & 15];
-}
-
 // Where the triangles of a block live: their vertex-index rows and their
 // (scene mesh, triangle) references. A block holds triangles of one mesh
 // only (each mesh's tree is built on its own before the trees are joined,
@@ -109,23 +102,29 @@ template <typename Visit>
   return set.meshCount() == 1 ? visit(SoleMesh(set)) : visit(ManyMeshes(set));
 }
 
+// What the float filter tells a search of each kind about a block's lanes:
+// an any-hit search, which lanes are certain hits (BlockRay::classify); a
+// closest-hit search, the candidates' distance bounds (BlockRay::rank).
+template <HitKind kKind>
+using FilteredLanes = std::conditional_t<kKind == HitKind::Any, BlockRay::Lanes, BlockRay::Ranked>;
+
 // The lanes of the block that the float filter passes on to the exact test,
-// and for an any-hit search those it finds certain hits (BlockRay::classify).
-// Every lane counts as one triangle test: those dropped here, the others in
-// the exact test or as a certain hit.
+// as FilteredLanes. Every lane counts as one triangle test: those dropped
+// here, the others in the exact test, as a certain hit or when they lie
+// beyond a nearer hit (searchLanes).
 // The exact test starts by reading the triangle's vertex indices from its
 // mesh, a cache miss on a large mesh; asking for them before the filter
 // runs overlaps that wait with it.
 template <HitKind kKind, typename Mesh>
-BlockRay::Lanes filterLanes(const BlockRay& ray, TriangleBlock block, const Mesh& mesh, double tMin,
-                            double tMax, Counters& counters) {
+FilteredLanes<kKind> filterLanes(const BlockRay& ray, TriangleBlock block, const Mesh& mesh,
+                                 double tMin, double tMax, Counters& counters) {
   const int n = block.count();
   for (int k = 0; k < n; ++k) prefetchLine(mesh.row(block.id(k)));
-  BlockRay::Lanes lanes{0, 0};
+  FilteredLanes<kKind> lanes;
   if constexpr (kKind == HitKind::Any)
     lanes = ray.classify(block, tMin, tMax);
   else
-    lanes.candidates = ray.candidates(block, tMin, tMax);
+    lanes = ray.rank(block, tMin, tMax);
   counters.triangleTests += static_cast<std::uint64_t>(n - laneCount(lanes.candidates));
   return lanes;
 }
@@ -152,6 +151,49 @@ bool forEachLane(TriangleBlock block, int lanes, const Mesh& mesh, Exact&& exact
   return false;
 }
 
+// The exact tests of a block's candidate lanes, until one ends the search.
+// An any-hit search takes them in lane order. A closest-hit search takes
+// them nearest first by their bounds and stops at the first that lies
+// beyond the hit found so far, as the filter would have dropped it had
+// that hit been known: in an interior, a leaf often holds both faces of a
+// wall or a beam, and a ray that meets the near one passes the filter for
+// the far one too.
+template <typename Search, typename Mesh>
+[[gnu::always_inline]] inline bool searchLanes(Search& search, const BlockRay& ray,
+                                               TriangleBlock block,
+                                               const FilteredLanes<Search::kKind>& lanes,
+                                               const Mesh& mesh, Counters& counters) {
+  if constexpr (Search::kKind == HitKind::Any) {
+    return forEachLane(block, lanes.candidates, mesh, [&](const PrimitiveRef& t) {
+      return search.triangle(t.object, t.triangle);
+    });
+  } else {
+    int left = lanes.candidates;
+    if ((left & (left - 1)) == 0) {  // one candidate or none: nothing to order
+      if (left) {
+        const PrimitiveRef t = mesh.ref(block.id(__builtin_ctz(static_cast<unsigned>(left))));
+        search.triangle(t.object, t.triangle);
+      }
+      return false;
+    }
+    while (left) {
+      int nearest = __builtin_ctz(static_cast<unsigned>(left));
+      for (int rest = left & (left - 1); rest; rest &= rest - 1) {
+        const int k = __builtin_ctz(static_cast<unsigned>(rest));
+        if (lanes.near[k] < lanes.near[nearest]) nearest = k;
+      }
+      if (ray.beyond(lanes.near[nearest], search.limit())) {
+        counters.triangleTests += static_cast<std::uint64_t>(laneCount(left));
+        break;
+      }
+      left &= ~(1 << nearest);
+      const PrimitiveRef t = mesh.ref(block.id(nearest));
+      search.triangle(t.object, t.triangle);
+    }
+    return false;
+  }
+}
+
 // Asks for the vertices of the lanes in `lanes`, so that the exact tests of
 // several lanes wait for them together, not in turn. Closest-hit packets on
 // large trees do this between filtering a block for all their rays and
@@ -173,11 +215,9 @@ template <typename Search, typename Locate>
                                                TriangleBlock block, const Locate& locate,
                                                double tMin, Counters& counters) {
   const auto& mesh = locate.of(block);
-  const BlockRay::Lanes lanes =
-      filterLanes<Search::kKind>(ray, block, mesh, tMin, search.limit(), counters);
+  const auto lanes = filterLanes<Search::kKind>(ray, block, mesh, tMin, search.limit(), counters);
   if (takesCertainLane(search, block, lanes.certain, mesh)) return true;
-  return forEachLane(block, lanes.candidates, mesh,
-                     [&](const PrimitiveRef& t) { return search.triangle(t.object, t.triangle); });
+  return searchLanes(search, ray, block, lanes, mesh, counters);
 }
 
 // What the triangle BVH's traversals ask for ahead: a leaf's data is its
@@ -429,7 +469,7 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
         const TriangleBlock block = meshBvh_.blocks.block(first, n);
         const auto& mesh = locate.of(block);
         // Every ray's filter first, then the exact tests.
-        BlockRay::Lanes lanes[kPacketSize] = {};
+        FilteredLanes<kKind> lanes[kPacketSize] = {};
         int any = 0;
         std::uint32_t now = 0;
         for (int r = 0; r < kPacketSize; ++r) {
@@ -444,10 +484,7 @@ std::uint32_t SceneBvh::tracePacket(Search* searches, std::uint32_t active,
         }
         if (kKind == HitKind::Closest && meshBvh_.prefetch) prefetchVertices(block, any, mesh);
         for (int r = 0; r < kPacketSize; ++r) {
-          Search& search = searches[r];
-          if (forEachLane(block, lanes[r].candidates, mesh, [&](const PrimitiveRef& t) {
-                return search.triangle(t.object, t.triangle);
-              }))
+          if (searchLanes(searches[r], blockRay.get(r), block, lanes[r], mesh, counters))
             now |= 1u << r;
         }
         return now;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "accel/bvh8.h"
@@ -113,6 +114,13 @@ class TriangleBlocks {
 // The frame that fits `box` (the set's bounds) in [-1, 1]^3.
 BlockFrame blockFrame(const Aabb& box);
 
+// Set bits of a mask of block lanes (std::popcount is a library call
+// without the popcnt instruction of later x86-64 levels).
+inline int laneCount(int mask) {
+  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCount[mask & 15];
+}
+
 // One ray prepared for the blocks made in one frame.
 class BlockRay {
  public:
@@ -121,7 +129,7 @@ class BlockRay {
   // Bit i set if lane i of `block` may hold a hit at tMin <= t <= tMax
   // (world distances) for the exact kernel; lanes past its count are clear.
   int candidates(TriangleBlock block, double tMin, double tMax) const {
-    return test<false>(block, tMin, tMax).candidates;
+    return test<Mode::Candidates>(block, tMin, tMax).candidates;
   }
   // candidates, and beside them the lanes the exact kernel is sure to hit at
   // tMin < t < tMax (a subset): an any-hit search needs no exact test of
@@ -130,12 +138,33 @@ class BlockRay {
     int candidates, certain;
   };
   Lanes classify(TriangleBlock block, double tMin, double tMax) const {
-    return test<true>(block, tMin, tMax);
+    return test<Mode::Certain>(block, tMin, tMax);
   }
+  // candidates, and beside them, when there are two or more, a lower bound
+  // on each one's distance (`near`, in the ray's local units; -inf for a
+  // lane the filter cannot bound): a closest-hit search tests them nearest
+  // first and leaves out those that lie beyond() the hit it has found.
+  struct Ranked : Lanes {
+    alignas(16) float near[kBlockLanes];
+  };
+  Ranked rank(TriangleBlock block, double tMin, double tMax) const {
+    Ranked ranked;
+    static_cast<Lanes&>(ranked) = test<Mode::Ranked>(block, tMin, tMax, ranked.near);
+    return ranked;
+  }
+  // Whether a lane of bound `near` (rank) is one the filter drops for a
+  // limit of tMax: the filter's own far test, rearranged.
+  bool beyond(float near, double tMax) const { return near > farLimit(tMax); }
 
  private:
-  template <bool kCertain>
-  Lanes test(TriangleBlock block, double tMin, double tMax) const;
+  enum class Mode { Candidates, Certain, Ranked };
+  // Mode::Ranked also writes rank()'s bounds to `near`.
+  template <Mode kMode>
+  Lanes test(TriangleBlock block, double tMin, double tMax, float* near = nullptr) const;
+  // tMax in local units, rounded up with room for the filter's roundings.
+  float farLimit(double tMax) const {
+    return std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
+  }
 
   __m128 origin_[3], direction_[3];
   float originError_ = 0.0f;    // bound on the error of o' - v0 (see the .cpp)
@@ -166,10 +195,15 @@ class BlockRay {
 // u_double), working that bound through the sheared coordinates gives
 //   deltaT det < 3 R (2 gamma_3 det + 8 gamma_5 R^2 (3 + 1/D)),
 // which a certain lane's t det must exceed as well.
-template <bool kCertain>
-inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax) const {
+template <BlockRay::Mode kMode>
+inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax,
+                                      float* near) const {
   const int valid = (1 << b.count()) - 1;
-  if (!filter_) return {valid, 0};
+  const auto unbounded = [] { return _mm_set1_ps(-std::numeric_limits<float>::infinity()); };
+  if (!filter_) {
+    if constexpr (kMode == Mode::Ranked) _mm_store_ps(near, unbounded());
+    return {valid, 0};
+  }
   constexpr float u = 0x1p-24f;
   const __m128 signBit = _mm_set1_ps(-0.0f);
   const auto abs = [&](__m128 x) { return _mm_andnot_ps(signBit, x); };
@@ -240,8 +274,7 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax)
   const __m128 mBary = add(mBeta, mGamma);
   inside = _mm_and_ps(inside, _mm_cmple_ps(add(betS, gamS), add(add(absDet, mBary), mDet)));
   // tMin' det - m <= t det <= tMax' det + m, with t' rounded outward.
-  const float far = std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
-  const __m128 farV = splat(far);
+  const __m128 farV = splat(farLimit(tMax));
   inside = _mm_and_ps(inside, _mm_cmple_ps(teeS, add(add(mul(farV, absDet), mT), mul(farV, mDet))));
   // tMin = 0 too: every query of a render has it, and without this test
   // the triangles a leaf holds behind the ray's origin would all pass.
@@ -251,10 +284,27 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax)
         _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));
   }
   const int candidates = _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+  if constexpr (kMode == Mode::Ranked) {
+    // The far test above is t det <= far (det + mDet) + mT: a lane stays
+    // for exactly the limits whose far is at least (t det - mT) / (det +
+    // mDet), rounded down here by one float ulp for the division's own
+    // rounding (far carries 2^-20 of room for the test's). Only worth its
+    // division when there is a choice of order.
+    if ((candidates & (candidates - 1)) == 0) {
+      _mm_store_ps(near, unbounded());
+      return {candidates, 0};
+    }
+    __m128 bound = _mm_div_ps(sub(teeS, mT), add(absDet, mDet));
+    bound = sub(bound, mul(abs(bound), splat(2 * u)));
+    _mm_store_ps(near,
+                 _mm_or_ps(_mm_and_ps(undecided, unbounded()), _mm_andnot_ps(undecided, bound)));
+    return {candidates, 0};
+  }
   // A lane whose t det is not clearly above 0 cannot be certain: the
   // triangle a spawned ray leaves, met by nearly every such ray, is
   // answered here.
-  if (!kCertain || !sure_ || !(_mm_movemask_ps(_mm_cmpgt_ps(teeS, add(mT, mT))) & candidates))
+  if (kMode != Mode::Certain || !sure_ ||
+      !(_mm_movemask_ps(_mm_cmpgt_ps(teeS, add(mT, mT))) & candidates))
     return {candidates, 0};
 
   // Sums of positive terms, each rounded; so scaled they stay bounds.

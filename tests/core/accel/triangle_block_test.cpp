@@ -84,7 +84,8 @@ struct FilterCount {
 
 // Every lane of every block against `rays` rays; counts exact hits the
 // filter dropped (with no upper limit on t, with the hit's own t as the
-// limit, and with a lower limit just below it).
+// limit, and with a lower limit just below it), and those a closest-hit
+// search would leave out as beyond a nearer hit at their own t (rank).
 FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   FilterCount c;
@@ -95,6 +96,8 @@ FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::u
     const TriangleRay exact(ray, kernel);
     for (const TriangleBlock& block : b.blocks) {
       const int mask = blockRay.candidates(block, 0.0, kInfinity);
+      const BlockRay::Ranked ranked = blockRay.rank(block, 0.0, kInfinity);
+      EXPECT_EQ(ranked.candidates, mask);
       c.lanes += block.count();
       for (int lane = 0; lane < block.count(); ++lane) {
         const bool passed = (mask >> lane) & 1;
@@ -105,7 +108,8 @@ FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::u
         ++c.hits;
         const bool atHit = (blockRay.candidates(block, 0.0, hit.t) >> lane) & 1;
         const bool fromBelow = (blockRay.candidates(block, hit.t * 0.999, kInfinity) >> lane) & 1;
-        if (!passed || !atHit || !fromBelow) ++c.dropped;
+        const bool leftOut = blockRay.beyond(ranked.near[lane], hit.t);
+        if (!passed || !atHit || !fromBelow || leftOut) ++c.dropped;
       }
       EXPECT_EQ(mask >> block.count(), 0) << "a lane past the block's triangles was reported";
     }
@@ -218,6 +222,36 @@ TEST(TriangleBlockFilter, DropsTheSliverBehindTheOrigin) {
     passed += BlockRay(ray, b.frame, {}).candidates(b.blocks[0], 0.0, kInfinity) & 1;
   }
   EXPECT_EQ(passed, 0);
+}
+
+// The two faces of a thin wall in one block, the far one first: a ray
+// through both ranks the near face first, and once it has hit it, the far
+// face lies beyond that hit and needs no exact test.
+TEST(TriangleBlockFilter, RanksTheFarFaceOfAWallBeyondTheNearFacesHit) {
+  MeshData wall;
+  wall.vertices = {Vec3(-1.0, -1.0, 0.1), Vec3(3.0, -1.0, 0.1), Vec3(-1.0, 3.0, 0.1),
+                   Vec3(-1.0, -1.0, 0.0), Vec3(3.0, -1.0, 0.0), Vec3(-1.0, 3.0, 0.0)};
+  wall.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const Blocks b = makeBlocks(wall);
+  ASSERT_EQ(b.blocks.size(), 1u);
+  const TriangleBlock& block = b.blocks[0];
+  const int nearLane = block.id(0) == 1 ? 0 : 1, farLane = 1 - nearLane;
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int r = 0; r < 1000; ++r) {
+    const Vec3 target(u(rng), u(rng), 0.05);
+    const Vec3 origin(u(rng) - 0.5, u(rng) - 0.5, -2.0 - 3.0 * u(rng));
+    const Ray ray{origin, glm::normalize(target - origin)};
+    const BlockRay blockRay(ray, b.frame, {});
+    const BlockRay::Ranked ranked = blockRay.rank(block, 0.0, kInfinity);
+    ASSERT_EQ(ranked.candidates, 3);
+    EXPECT_LT(ranked.near[nearLane], ranked.near[farLane]);
+    TriangleHit hit;
+    ASSERT_TRUE(TriangleRay(ray, {}).intersect(wall.vertices[3], wall.vertices[4], wall.vertices[5],
+                                               0.0, kInfinity, hit));
+    EXPECT_FALSE(blockRay.beyond(ranked.near[nearLane], hit.t));
+    EXPECT_TRUE(blockRay.beyond(ranked.near[farLane], hit.t));
+  }
 }
 
 // A ray from a hair off a triangle's surface, on either side, in any
