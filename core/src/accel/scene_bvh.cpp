@@ -45,6 +45,13 @@ std::size_t buildMeshBvh(const BvhBuildOptions& options, MeshBvh& out) {
   return copies;
 }
 
+// Set bits of a 4-bit lane mask (std::popcount is a library call without
+// the popcnt instruction of later x86-64 levels).
+int laneCount(int mask) {
+  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCount[mask & 15];
+}
+
 // Where the triangles of a block live: their vertex-index rows and their
 // (scene mesh, triangle) references. A block holds triangles of one mesh
 // only (each mesh's tree is built on its own before the trees are joined,

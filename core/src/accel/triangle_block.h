@@ -114,13 +114,6 @@ class TriangleBlocks {
 // The frame that fits `box` (the set's bounds) in [-1, 1]^3.
 BlockFrame blockFrame(const Aabb& box);
 
-// Set bits of a mask of block lanes (std::popcount is a library call
-// without the popcnt instruction of later x86-64 levels).
-inline int laneCount(int mask) {
-  static constexpr int kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-  return kCount[mask & 15];
-}
-
 // One ray prepared for the blocks made in one frame.
 class BlockRay {
  public:
