@@ -119,21 +119,20 @@ class BlockRay {
  public:
   BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel);
 
-  // Bit i set if lane i of `block` may hold a hit at tMin <= t <= tMax
-  // (world distances) for the exact kernel; lanes past its count are clear.
-  int candidates(TriangleBlock block, double tMin, double tMax) const {
-    return test<Mode::Candidates>(block, tMin, tMax).candidates;
-  }
-  // candidates, and beside them the lanes the exact kernel is sure to hit at
-  // tMin < t < tMax (a subset): an any-hit search needs no exact test of
-  // those. Only double-precision kernels are ever sure.
+  // What the filter finds in a block's lanes. `candidates`: bit i set if
+  // lane i of the block may hold a hit at tMin <= t <= tMax (world
+  // distances) for the exact kernel; lanes past its count are clear.
   struct Lanes {
     int candidates, certain;
   };
+  // The candidates, and beside them the lanes the exact kernel is sure to
+  // hit at tMin < t < tMax (`certain`, a subset): an any-hit search needs
+  // no exact test of those. Only double-precision kernels are ever sure.
   Lanes classify(TriangleBlock block, double tMin, double tMax) const {
     return test<Mode::Certain>(block, tMin, tMax);
   }
-  // candidates, and beside them, when there are two or more, a lower bound
+  // The candidates (none certain), and beside them, when there are two or
+  // more, a lower bound
   // on each one's distance (`near`, in the ray's local units; -inf for a
   // lane the filter cannot bound): a closest-hit search tests them nearest
   // first and leaves out those that lie beyond() the hit it has found.
@@ -150,7 +149,7 @@ class BlockRay {
   bool beyond(float near, double tMax) const { return near > farLimit(tMax); }
 
  private:
-  enum class Mode { Candidates, Certain, Ranked };
+  enum class Mode { Certain, Ranked };
   // Mode::Ranked also writes rank()'s bounds to `near`.
   template <Mode kMode>
   Lanes test(TriangleBlock block, double tMin, double tMax, float* near = nullptr) const;
@@ -296,8 +295,7 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax,
   // A lane whose t det is not clearly above 0 cannot be certain: the
   // triangle a spawned ray leaves, met by nearly every such ray, is
   // answered here.
-  if (kMode != Mode::Certain || !sure_ ||
-      !(_mm_movemask_ps(_mm_cmpgt_ps(teeS, add(mT, mT))) & candidates))
+  if (!sure_ || !(_mm_movemask_ps(_mm_cmpgt_ps(teeS, add(mT, mT))) & candidates))
     return {candidates, 0};
 
   // Sums of positive terms, each rounded; so scaled they stay bounds.
