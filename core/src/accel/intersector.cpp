@@ -2,6 +2,8 @@
 
 #include <tbb/task_arena.h>
 
+#include <bit>
+
 #include "accel/primitive_query.h"
 #include "accel/scene_bvh.h"
 #include "meshtrace/util/enum_names.h"
@@ -121,10 +123,22 @@ bool SceneIntersector::closestHit(const Ray& ray, double tMin, Hit& hit, Counter
 }
 
 bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
-                                const PrimitiveRef* start) const {
+                                const PrimitiveRef* start, LastBlocker* last) const {
   if (external_) return external_->occluded(ray, tMin, tMax, counters);
   AnyHitSearch search(tMax, scene_, ray, options_.triangle, tMin, counters, start);
-  return trace(search, counters);
+  if (!last || last->givenUp()) return trace(search, counters);
+  if (last->known) {
+    if (search.primitive(last->primitive)) {
+      ++counters.lastBlockerHits;
+      last->misses = 0;
+      return true;
+    }
+    ++last->misses;
+  }
+  const bool blocked = trace(search, counters);
+  last->known = blocked;
+  if (blocked) last->primitive = search.blocker();
+  return blocked;
 }
 
 void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found,
@@ -146,19 +160,43 @@ void SceneIntersector::closestHitPacket(const Ray* rays, double tMin, Hit* hits,
 
 std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, const double* tMax,
                                                const PrimitiveRef* start, std::uint32_t active,
-                                               Counters& counters) const {
+                                               Counters& counters, LastBlocker* last) const {
   if (active == 0) return 0;  // a quad with no hit, or a light behind all four
   if (!bvh_) {
     std::uint32_t blocked = 0;
     for (int r = 0; r < kPacketSize; ++r)
-      if (active >> r & 1 && occluded(rays[r], tMin, tMax[r], counters, &start[r]))
+      if (active >> r & 1 && occluded(rays[r], tMin, tMax[r], counters, &start[r], last))
         blocked |= 1u << r;
     return blocked;
   }
   auto searches = makeLanes<kPacketSize>([&](std::size_t r) {
     return AnyHitSearch(tMax[r], scene_, rays[r], options_.triangle, tMin, counters, &start[r]);
   });
-  return bvh_->tracePacket(searches.data(), active, counters);
+  if (!last || last->givenUp()) return bvh_->tracePacket(searches.data(), active, counters);
+  // The rays the last blocker blocks, tested in turn up to the first it
+  // does not: where it fails once, it seldom serves the rest, and a mesh's
+  // small triangles would cost four tests a packet to no avail.
+  std::uint32_t known = 0;
+  if (last->known) {
+    for (std::uint32_t rays = active; rays != 0; rays &= rays - 1) {
+      const int r = std::countr_zero(rays);
+      if (!searches[r].primitive(last->primitive)) break;
+      known |= 1u << r;
+    }
+    counters.lastBlockerHits += static_cast<std::uint64_t>(std::popcount(known));
+    last->misses = known ? 0 : last->misses + 1;
+  }
+  const std::uint32_t rest = active & ~known;
+  const std::uint32_t traced = rest ? bvh_->tracePacket(searches.data(), rest, counters) : 0;
+  // A blocker the traversal found replaces the last; one that blocked none
+  // of these rays is forgotten.
+  if (traced) {
+    last->known = true;
+    last->primitive = searches[std::countr_zero(traced)].blocker();
+  } else if (!known) {
+    last->known = false;
+  }
+  return known | traced;
 }
 
 }  // namespace meshtrace

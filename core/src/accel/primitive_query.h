@@ -183,18 +183,32 @@ class AnyHitSearch {
 
   const PrimitiveQuery& query() const { return query_; }
   const double& limit() const { return tMax_; }
-  bool shape(ObjectKind kind, std::uint32_t i) { return query_.shapeBlocks(kind, i, tMax_); }
+  bool shape(ObjectKind kind, std::uint32_t i) {
+    return query_.shapeBlocks(kind, i, tMax_) && endedBy({kind, i, 0});
+  }
   bool triangle(std::uint32_t mesh, std::uint32_t tri) {
-    return query_.triangleBlocks(mesh, tri, tMax_);
+    return query_.triangleBlocks(mesh, tri, tMax_) && endedBy({ObjectKind::Mesh, mesh, tri});
   }
   // A triangle the float filter proved a hit before the limit.
   bool certainTriangle(std::uint32_t mesh, std::uint32_t tri) {
-    return query_.certainTriangleBlocks(mesh, tri);
+    return query_.certainTriangleBlocks(mesh, tri) && endedBy({ObjectKind::Mesh, mesh, tri});
   }
+  // The same test of one primitive of the scene, named by `p`.
+  bool primitive(const PrimitiveRef& p) {
+    return p.kind == ObjectKind::Mesh ? triangle(p.object, p.triangle) : shape(p.kind, p.object);
+  }
+  // The primitive that ended the search, once one has.
+  const PrimitiveRef& blocker() const { return blocker_; }
 
  private:
+  bool endedBy(const PrimitiveRef& p) {
+    blocker_ = p;
+    return true;
+  }
+
   PrimitiveQuery query_;
   double tMax_;
+  PrimitiveRef blocker_;
 };
 
 }  // namespace meshtrace

@@ -152,8 +152,8 @@ struct Job {
   bool finished() const { return itemsDone.load() == itemCount; }
   std::size_t index(int col, int row) const { return static_cast<std::size_t>(row) * width + col; }
 
-  Color tracePixel(double x, double y, Counters& work) const {
-    return integrator->pixel(camera, x, y, work);
+  Color tracePixel(double x, double y, Counters& work, LastBlockers& blockers) const {
+    return integrator->pixel(camera, x, y, work, &blockers);
   }
 
   // Calls fn(col, row) for the pixels of tile [c0, c1) x [r0, r1) that
@@ -185,6 +185,7 @@ struct Job {
     const int c0 = (t % tilesX) * tile, r0 = (t / tilesX) * tile;
     const int c1 = std::min(c0 + tile, width), r1 = std::min(r0 + tile, height);
     Counters work;
+    LastBlockers blockers(scene->scene());
     const bool antiAliasing = pass >= levelCount();
     const int step = antiAliasing ? 1 : steps[pass];
     const double samples = antiAliasing ? double(pass - levelCount() + 2) : 1.0;
@@ -198,13 +199,13 @@ struct Job {
       if (!mayGoOn()) return false;
       const double x = c + dx, y = flippedRow(r, height) + dy;
       if (antiAliasing) {
-        const Color sum = buffers->sum[index(c, r)] += tracePixel(x, y, work);
+        const Color sum = buffers->sum[index(c, r)] += tracePixel(x, y, work, blockers);
         fresh[(r - r0) * tile + (c - c0)] = rgbaOf(sum / samples);
         return true;
       }
       ++traced;
       if (settings.color) {
-        const Color v = tracePixel(x, y, work);
+        const Color v = tracePixel(x, y, work, blockers);
         if (!buffers->sum.empty()) buffers->sum[index(c, r)] = v;
         fresh[(r - r0) * tile + (c - c0)] = rgbaOf(v);
       }

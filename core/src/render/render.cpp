@@ -21,18 +21,21 @@ Image render(const SceneIntersector& intersector, const Camera& camera, int thre
   Image image(camera.width(), camera.height());
   const int width = image.width, height = image.height;
   // Pixels go in 2x2 quads whose primary rays are traced together
-  // (Integrator::quad), in tiles of 8x8 quads. The quads sit on even
-  // storage rows and columns whatever the tiling, so the work done does not
-  // depend on the thread count; a quad cut by the image's edge goes pixel
-  // by pixel.
-  const auto tile = [&](const tbb::blocked_range<int>& quadRows,
-                        const tbb::blocked_range<int>& quadCols, Counters& c) {
-    for (int qr = quadRows.begin(); qr < quadRows.end(); ++qr)
-      for (int qc = quadCols.begin(); qc < quadCols.end(); ++qc) {
+  // (Integrator::quad), in fixed tiles of kTileQuads x kTileQuads quads,
+  // each with LastBlockers of its own: what the quads of a tile carry from
+  // one to the next, and so the work done, does not depend on the thread
+  // count. The quads sit on even storage rows and columns; a quad cut by
+  // the image's edge goes pixel by pixel.
+  constexpr int kTileQuads = 8;
+  const int quadsX = (width + 1) / 2, quadsY = (height + 1) / 2;
+  const auto quadsOfTile = [&](int tileRow, int tileCol, Counters& c) {
+    LastBlockers blockers(intersector.scene());
+    for (int qr = tileRow * kTileQuads; qr < std::min((tileRow + 1) * kTileQuads, quadsY); ++qr)
+      for (int qc = tileCol * kTileQuads; qc < std::min((tileCol + 1) * kTileQuads, quadsX); ++qc) {
         const int row = 2 * qr, x = 2 * qc;
         if (row + 1 < height && x + 1 < width) {
           Color quad[kPacketSize];
-          integrator.quad(camera, x, flippedRow(row + 1, height), quad, c);
+          integrator.quad(camera, x, flippedRow(row + 1, height), quad, c, &blockers);
           image.at(x, row + 1) = quad[0];
           image.at(x + 1, row + 1) = quad[1];
           image.at(x, row) = quad[2];
@@ -41,10 +44,17 @@ Image render(const SceneIntersector& intersector, const Camera& camera, int thre
         }
         for (int r = row; r < std::min(row + 2, height); ++r)
           for (int px = x; px < std::min(x + 2, width); ++px)
-            image.at(px, r) = integrator.pixel(camera, px, flippedRow(r, height), c);
+            image.at(px, r) = integrator.pixel(camera, px, flippedRow(r, height), c, &blockers);
       }
   };
-  const Counters total = forEachTile((width + 1) / 2, (height + 1) / 2, 8, threads, tile);
+  const Counters total = forEachTile((quadsX + kTileQuads - 1) / kTileQuads,
+                                     (quadsY + kTileQuads - 1) / kTileQuads, 1, threads,
+                                     [&](const tbb::blocked_range<int>& tileRows,
+                                         const tbb::blocked_range<int>& tileCols, Counters& c) {
+                                       for (int tr = tileRows.begin(); tr < tileRows.end(); ++tr)
+                                         for (int tc = tileCols.begin(); tc < tileCols.end(); ++tc)
+                                           quadsOfTile(tr, tc, c);
+                                     });
   if (counters) *counters += total;
   return image;
 }

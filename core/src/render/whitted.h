@@ -53,10 +53,14 @@ inline Ray shadowRayToward(const Light& light, const SurfacePoint& sp, const Vec
 
 // Ambient plus, per light, diffuse and specular unless the light is behind
 // the surface or shadowed: shadowed(i, l) tells whether the shadow ray
-// toward light i, in direction l, is blocked.
+// toward light i, in direction l, is blocked. Always inlined: it is each
+// ray's shading in the packet loop, which the compiler would otherwise
+// call out of line.
 template <typename Observer, typename Shadowed>
-Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir, const SurfacePoint& sp,
-                   Counters& counters, Observer& observer, const Shadowed& shadowed) {
+[[gnu::always_inline]] inline Color whittedLocal(const SceneIntersector& intersector,
+                                                 const Vec3& viewDir, const SurfacePoint& sp,
+                                                 Counters& counters, Observer& observer,
+                                                 const Shadowed& shadowed) {
   const Scene& scene = intersector.scene();
   const Material& m = *sp.material;
   Color color = scene.ambience * m.ambient;
@@ -90,7 +94,8 @@ Color whittedLocal(const SceneIntersector& intersector, const Vec3& viewDir, con
 
 template <typename Observer>
 Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
-                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr);
+                   Counters& counters, Observer& observer, const PrimitiveRef* start = nullptr,
+                   LastBlockers* blockers = nullptr);
 
 // Whether the surface at sp, reached at recursion level `level`, adds a
 // mirror reflection. The deepest level keeps its local colour rather than
@@ -117,7 +122,7 @@ inline Color mirrorMix(const Color& local, double mirror, const Color& reflected
 template <typename Observer, typename Shadowed>
 Color whittedShadeAt(const SceneIntersector& intersector, const Ray& ray, const Hit& hit,
                      const SurfacePoint& sp, int level, Counters& counters, Observer& observer,
-                     const Shadowed& shadowed) {
+                     const Shadowed& shadowed, LastBlockers* blockers) {
   const Scene& scene = intersector.scene();
   observer.surface(hit, sp);
   const Color local = whittedLocal(intersector, -ray.direction, sp, counters, observer, shadowed);
@@ -131,7 +136,7 @@ Color whittedShadeAt(const SceneIntersector& intersector, const Ray& ray, const 
   ++counters.reflectionRays;
   const Color color = mirrorMix(local, mirror,
                                 whittedTrace(intersector, mirrorBounce(ray, sp), level + 1,
-                                             counters, observer, &sp.primitive));
+                                             counters, observer, &sp.primitive, blockers));
   observer.endBounce(color);
   return color;
 }
@@ -140,7 +145,7 @@ Color whittedShadeAt(const SceneIntersector& intersector, const Ray& ray, const 
 // none); shadow rays are traced one by one.
 template <typename Observer>
 Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool found, const Hit& hit,
-                   int level, Counters& counters, Observer& observer) {
+                   int level, Counters& counters, Observer& observer, LastBlockers* blockers) {
   const Scene& scene = intersector.scene();
   if (!found) {
     observer.endBounce(scene.background);
@@ -150,20 +155,23 @@ Color whittedShade(const SceneIntersector& intersector, const Ray& ray, bool fou
   const auto shadowed = [&](std::size_t i, const Vec3& l) {
     double lightDistance;
     const Ray shadow = shadowRayToward(scene.lights[i], sp, l, lightDistance);
-    return intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive);
+    return intersector.occluded(shadow, kSpawnTMin, lightDistance, counters, &sp.primitive,
+                                blockers ? blockers->at(level, i) : nullptr);
   };
-  return whittedShadeAt(intersector, ray, hit, sp, level, counters, observer, shadowed);
+  return whittedShadeAt(intersector, ray, hit, sp, level, counters, observer, shadowed, blockers);
 }
 
 // Colour seen along `ray` at recursion level `level` (0 = primary); `start`
-// is the primitive a reflected ray leaves.
+// is the primitive a reflected ray leaves; `blockers`, if given, the shadow
+// rays' LastBlockers of the caller's run of pixels.
 template <typename Observer>
 Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int level,
-                   Counters& counters, Observer& observer, const PrimitiveRef* start) {
+                   Counters& counters, Observer& observer, const PrimitiveRef* start,
+                   LastBlockers* blockers) {
   observer.beginBounce(level, ray);
   Hit hit;
   const bool found = intersector.closestHit(ray, kSpawnTMin, hit, counters, start);
-  return whittedShade(intersector, ray, found, hit, level, counters, observer);
+  return whittedShade(intersector, ray, found, hit, level, counters, observer, blockers);
 }
 
 // whittedTrace for the rays of a packet named in `active` (bit r: rays[r],
@@ -175,7 +183,7 @@ Color whittedTrace(const SceneIntersector& intersector, const Ray& ray, int leve
 // valid ray, active or not.
 inline void whittedShadePacket(const SceneIntersector& intersector, const Ray* rays,
                                std::uint32_t active, int level, const PrimitiveRef* start,
-                               Color* out, Counters& counters) {
+                               Color* out, Counters& counters, LastBlockers* blockers) {
   const Scene& scene = intersector.scene();
   Hit hits[kPacketSize];
   bool found[kPacketSize];
@@ -184,7 +192,8 @@ inline void whittedShadePacket(const SceneIntersector& intersector, const Ray* r
   if (scene.lights.size() > kMaxPacketLights) {
     for (int r = 0; r < kPacketSize; ++r)
       if (active >> r & 1)
-        out[r] = whittedShade(intersector, rays[r], found[r], hits[r], level, counters, none);
+        out[r] =
+            whittedShade(intersector, rays[r], found[r], hits[r], level, counters, none, blockers);
     return;
   }
   SurfacePoint sp[kPacketSize];
@@ -209,8 +218,8 @@ inline void whittedShadePacket(const SceneIntersector& intersector, const Ray* r
         cast |= 1u << r;
       }
     }
-    blocked[i] =
-        intersector.occludedPacket(shadow, kSpawnTMin, lightDistance, shadowStart, cast, counters);
+    blocked[i] = intersector.occludedPacket(shadow, kSpawnTMin, lightDistance, shadowStart, cast,
+                                            counters, blockers ? blockers->at(level, i) : nullptr);
   }
   Color local[kPacketSize];
   Ray bounce[kPacketSize];
@@ -237,7 +246,8 @@ inline void whittedShadePacket(const SceneIntersector& intersector, const Ray* r
   for (int r = 0; r < kPacketSize; ++r)
     if (!(reflecting >> r & 1)) bounce[r] = bounce[__builtin_ctz(reflecting)];
   Color seen[kPacketSize];
-  whittedShadePacket(intersector, bounce, reflecting, level + 1, bounceStart, seen, counters);
+  whittedShadePacket(intersector, bounce, reflecting, level + 1, bounceStart, seen, counters,
+                     blockers);
   for (int r = 0; r < kPacketSize; ++r)
     if (reflecting >> r & 1) out[r] = mirrorMix(local[r], sp[r].material->mirror, seen[r]);
 }

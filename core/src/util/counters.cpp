@@ -14,6 +14,7 @@ Counters& Counters::operator+=(const Counters& o) {
   planeTests += o.planeTests;
   cylinderTests += o.cylinderTests;
   nodeVisits += o.nodeVisits;
+  lastBlockerHits += o.lastBlockerHits;
   return *this;
 }
 
@@ -23,7 +24,8 @@ std::string Counters::describe() const {
     << " reflection\n"
     << "tests: " << boxTests << " box, " << triangleTests << " triangle, " << sphereTests
     << " sphere, " << planeTests << " plane, " << cylinderTests << " cylinder\n"
-    << "bvh: " << nodeVisits << " node visits\n";
+    << "bvh: " << nodeVisits << " node visits\n"
+    << "shadow rays answered by the last blocker toward their light: " << lastBlockerHits << "\n";
   return s.str();
 }
 

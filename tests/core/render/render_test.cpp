@@ -6,10 +6,12 @@
 
 #include <cmath>
 
+#include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/layers.h"
 #include "support/files.h"
+#include "support/meshes.h"
 #include "support/paths.h"
 #include "support/scene_snippets.h"
 
@@ -56,6 +58,29 @@ TEST(Render, CountsTheSameWorkForOneAndTwoThreads) {
   render(scene, two, &c2);
   EXPECT_EQ(c1.primaryRays, 37u * 23u);
   EXPECT_EQ(c1.describe(), c2.describe());
+}
+
+// Shadow rays test the last blocker toward their light (LastBlockers), which
+// a render task carries from pixel to pixel: the tasks' tiles, and so the
+// work counted, must not depend on the thread count or the workers' timing.
+TEST(Render, CountsTheSameWorkForOneAndTwoThreadsWhereBlockersCarryOver) {
+  Scene scene;
+  scene.meshes.push_back(test::makeMesh("hall", makeHall(40.0, 16.0, 8.0)));
+  scene.lights.push_back({Vec3(60.0, 30.0, -5.0), Color(0.8)});
+  scene.lights.push_back({Vec3(0.0, 7.0, 4.0), Color(0.3)});
+  scene.camera = Camera(CameraSpec{Vec3(2.0, 1.7, 18.0), Vec3(-1.5, 2.6, -12.0),
+                                   Vec3(0.0, 1.0, 0.0), 70.0, 240, 180});
+  RenderOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  Counters c1, c2, again;
+  const Image a = render(scene, one, &c1);
+  const Image b = render(scene, two, &c2);
+  render(scene, two, &again);
+  EXPECT_TRUE(a.pixels == b.pixels);
+  EXPECT_GT(c1.lastBlockerHits, c1.shadowRays / 10);
+  EXPECT_EQ(c1.describe(), c2.describe());
+  EXPECT_EQ(c2.describe(), again.describe());
 }
 
 // The image traces its rays in 2x2 packets (odd edges pixel by pixel):

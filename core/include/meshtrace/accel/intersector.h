@@ -26,6 +26,25 @@ class ExternalIntersector {
   virtual bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters) const = 0;
 };
 
+// The primitive that blocked the last shadow ray toward a light, kept by
+// the caller from one such query to the next (one per light and thread).
+// Shadow rays from neighbouring pixels toward one light are mostly blocked
+// by the same wall or floor, if at all: testing that primitive first
+// answers them without a traversal. A ray the primitive does not block is
+// traced as without it, so the answers are the same; a ray nothing blocks
+// forgets it, and lit surfaces pay for no test. Where the blockers keep
+// failing (a mesh shadowing itself, each ray by other small triangles),
+// the caller's run of rays stops keeping them after kMaxMisses in a row.
+struct LastBlocker {
+  static constexpr int kMaxMisses = 3;
+
+  bool known = false;
+  PrimitiveRef primitive;
+  int misses = 0;  // blockers in a row that blocked none of the rays tested
+
+  bool givenUp() const { return misses >= kMaxMisses; }
+};
+
 // About how many bytes constructing a SceneIntersector for `scene` with
 // `options` allocates at the peak of its build: an estimate with a margin,
 // from the sizes of the build's arrays, for a caller to check against a
@@ -57,15 +76,17 @@ class SceneIntersector {
   void closestHitPacket(const Ray* rays, double tMin, Hit* hits, bool* found, Counters& counters,
                         const PrimitiveRef* start = nullptr, std::uint32_t active = 0xfu) const;
   // occluded for the kPacketSize rays named in `active` (bit r: rays[r], up
-  // to tMax[r], leaving start[r]); returns those blocked, exactly as four
-  // calls would. With --accel bvh they are traced together. Every rays[r]
-  // must be a valid ray, active or not.
+  // to tMax[r], leaving start[r]), all toward one light; returns those
+  // blocked, exactly as four calls would. With --accel bvh they are traced
+  // together. Every rays[r] must be a valid ray, active or not.
   std::uint32_t occludedPacket(const Ray* rays, double tMin, const double* tMax,
-                               const PrimitiveRef* start, std::uint32_t active,
-                               Counters& counters) const;
-  // True if anything lies at tMin < t < tMax; `start` as above.
+                               const PrimitiveRef* start, std::uint32_t active, Counters& counters,
+                               LastBlocker* last = nullptr) const;
+  // True if anything lies at tMin < t < tMax; `start` as above. `last`, if
+  // given, is tested first and updated (not with an external intersector,
+  // which does not name what it met).
   bool occluded(const Ray& ray, double tMin, double tMax, Counters& counters,
-                const PrimitiveRef* start = nullptr) const;
+                const PrimitiveRef* start = nullptr, LastBlocker* last = nullptr) const;
 
   const Scene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }

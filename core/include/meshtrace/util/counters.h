@@ -15,6 +15,9 @@ struct Counters {
   std::uint64_t planeTests = 0;
   std::uint64_t cylinderTests = 0;
   std::uint64_t nodeVisits = 0;  // BVH nodes entered, top level and meshes
+  // Shadow rays answered by the primitive that blocked the previous one
+  // toward the same light (LastBlocker), without a traversal.
+  std::uint64_t lastBlockerHits = 0;
 
   Counters& operator+=(const Counters& o);
   std::string describe() const;
