@@ -128,16 +128,15 @@ bool SceneIntersector::occluded(const Ray& ray, double tMin, double tMax, Counte
   AnyHitSearch search(tMax, scene_, ray, options_.triangle, tMin, counters, start);
   if (!last || last->givenUp()) return trace(search, counters);
   if (last->known) {
-    if (search.primitive(last->primitive)) {
+    const bool answered = search.primitive(last->primitive);
+    last->tested(answered);
+    if (answered) {
       ++counters.lastBlockerHits;
-      last->misses = 0;
       return true;
     }
-    ++last->misses;
   }
   const bool blocked = trace(search, counters);
-  last->known = blocked;
-  if (blocked) last->primitive = search.blocker();
+  last->traversed(blocked ? &search.blocker() : nullptr, false);
   return blocked;
 }
 
@@ -184,18 +183,11 @@ std::uint32_t SceneIntersector::occludedPacket(const Ray* rays, double tMin, con
       known |= 1u << r;
     }
     counters.lastBlockerHits += static_cast<std::uint64_t>(std::popcount(known));
-    last->misses = known ? 0 : last->misses + 1;
+    last->tested(known != 0);
   }
   const std::uint32_t rest = active & ~known;
   const std::uint32_t traced = rest ? bvh_->tracePacket(searches.data(), rest, counters) : 0;
-  // A blocker the traversal found replaces the last; one that blocked none
-  // of these rays is forgotten.
-  if (traced) {
-    last->known = true;
-    last->primitive = searches[std::countr_zero(traced)].blocker();
-  } else if (!known) {
-    last->known = false;
-  }
+  last->traversed(traced ? &searches[std::countr_zero(traced)].blocker() : nullptr, known != 0);
   return known | traced;
 }
 

@@ -43,6 +43,19 @@ struct LastBlocker {
   int misses = 0;  // blockers in a row that blocked none of the rays tested
 
   bool givenUp() const { return misses >= kMaxMisses; }
+  // After it was tested on a query's rays: whether it blocked any.
+  void tested(bool blockedSome) { misses = blockedSome ? 0 : misses + 1; }
+  // After the traversal of the rays it did not block: a blocker `found`
+  // there replaces it; without one it is forgotten, unless it blocked some
+  // of the query's rays itself (`answeredSome`).
+  void traversed(const PrimitiveRef* found, bool answeredSome) {
+    if (found) {
+      known = true;
+      primitive = *found;
+    } else if (!answeredSome) {
+      known = false;
+    }
+  }
 };
 
 // About how many bytes constructing a SceneIntersector for `scene` with
