@@ -3,6 +3,9 @@
 #include <cmath>
 #include <utility>
 
+#include "meshtrace/geometry/camera.h"
+#include "meshtrace/geometry/mesh_generators.h"
+
 namespace meshtrace::test {
 
 Mesh makeMesh(const char* name, MeshData data) {
@@ -39,6 +42,16 @@ MeshData withCopies(MeshData m, std::size_t every, int copies) {
     m.triangles.push_back({vertex(moved), b, c});
   }
   return m;
+}
+
+Scene hallScene(int width, int height) {
+  Scene scene;
+  scene.meshes.push_back(makeMesh("hall", makeHall(40.0, 16.0, 8.0)));
+  scene.lights.push_back({Vec3(60.0, 30.0, -5.0), Color(0.8, 0.75, 0.65)});
+  scene.lights.push_back({Vec3(0.0, 7.0, 4.0), Color(0.35, 0.35, 0.38)});
+  scene.camera = Camera(CameraSpec{Vec3(2.0, 1.7, 18.0), Vec3(-1.5, 2.6, -12.0),
+                                   Vec3(0.0, 1.0, 0.0), 70.0, width, height});
+  return scene;
 }
 
 }  // namespace meshtrace::test

@@ -5,6 +5,7 @@
 
 #include "meshtrace/geometry/aabb.h"
 #include "meshtrace/geometry/mesh.h"
+#include "meshtrace/geometry/scene.h"
 
 namespace meshtrace::test {
 
@@ -20,5 +21,11 @@ std::vector<Aabb> triangleBoxes(const MeshData& m);
 // have the same box: its five other corner orders, and its corners with
 // the first moved by one ulp.
 MeshData withCopies(MeshData m, std::size_t every, int copies);
+
+// The hall of scenes/hall (makeHall) with its two lights, the sun through
+// the windows and a lamp under the ceiling, seen by its camera at
+// `width` x `height` pixels: most shadow rays are blocked by walls, beams
+// and bars, which neighbouring pixels share.
+Scene hallScene(int width, int height);
 
 }  // namespace meshtrace::test

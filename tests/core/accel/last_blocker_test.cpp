@@ -13,8 +13,6 @@
 #include <vector>
 
 #include "meshtrace/accel/intersector.h"
-#include "meshtrace/geometry/camera.h"
-#include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/render/spawn.h"
 #include "meshtrace/render/surface.h"
 #include "support/meshes.h"
@@ -22,18 +20,13 @@
 namespace meshtrace {
 namespace {
 
-// The hall of make_scenes with a ball, a post and a floor plane below it,
-// so that a blocker may be a triangle or a shape.
+// The hall with a ball, a post and a floor plane below it, so that a
+// blocker may be a triangle or a shape.
 Scene hallScene() {
-  Scene scene;
-  scene.meshes.push_back(test::makeMesh("hall", makeHall(40.0, 16.0, 8.0)));
+  Scene scene = test::hallScene(96, 72);
   scene.spheres.push_back({Vec3(-4.0, 1.5, 2.0), 1.0, {}});
   scene.cylinders.push_back({Vec3(5.0, 0.0, -3.0), 0.4, Vec3(0.0, 1.0, 0.0), 5.0, {}});
   scene.planes.push_back({Vec3(0.0, -0.5, 0.0), Vec3(0.0, 1.0, 0.0), {}});
-  scene.lights.push_back({Vec3(60.0, 30.0, -5.0), Color(1.0)});  // the sun, through the windows
-  scene.lights.push_back({Vec3(0.0, 7.0, 4.0), Color(1.0)});     // a lamp under the ceiling
-  scene.camera = Camera(
-      CameraSpec{Vec3(2.0, 1.7, 18.0), Vec3(-1.5, 2.6, -12.0), Vec3(0.0, 1.0, 0.0), 70.0, 96, 72});
   return scene;
 }
 

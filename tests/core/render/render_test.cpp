@@ -6,7 +6,6 @@
 
 #include <cmath>
 
-#include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/io/scene_parser.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/layers.h"
@@ -64,12 +63,7 @@ TEST(Render, CountsTheSameWorkForOneAndTwoThreads) {
 // a render task carries from pixel to pixel: the tasks' tiles, and so the
 // work counted, must not depend on the thread count or the workers' timing.
 TEST(Render, CountsTheSameWorkForOneAndTwoThreadsWhereBlockersCarryOver) {
-  Scene scene;
-  scene.meshes.push_back(test::makeMesh("hall", makeHall(40.0, 16.0, 8.0)));
-  scene.lights.push_back({Vec3(60.0, 30.0, -5.0), Color(0.8)});
-  scene.lights.push_back({Vec3(0.0, 7.0, 4.0), Color(0.3)});
-  scene.camera = Camera(CameraSpec{Vec3(2.0, 1.7, 18.0), Vec3(-1.5, 2.6, -12.0),
-                                   Vec3(0.0, 1.0, 0.0), 70.0, 240, 180});
+  const Scene scene = test::hallScene(240, 180);
   RenderOptions one, two;
   one.threads = 1;
   two.threads = 2;
