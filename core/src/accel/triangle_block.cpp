@@ -143,8 +143,27 @@ TriangleBlocks::TriangleBlocks(const TriangleSet& triangles, const BlockFrame& f
 //   vertices and the origin, in world terms k u_kernel (|o| + |v|), scaled to
 //   local lengths; the filter treats it as extra input error. k = 2^10 for
 //   double kernels is far above their few roundings; single-precision
-//   kernels round the world coordinates to float, so their k is 32 u_float
-//   and the filter then passes almost everything on to them.
+//   kernels round the world coordinates to float, so their k is 32 u_float.
+// The beta and gamma margins take kernelError differently for dropping a
+// lane and for calling it certain. As an error of the edges, it would be
+// multiplied by the origin's distance S, the whole way to the triangle,
+// and a single-precision kernel's lanes near the ray would all pass. To
+// drop a lane a dilation is enough: the kernel acts as the exact test on a
+// triangle whose corners, relative to the origin, moved by at most
+// r = 2 sqrt(3) kernelError, so its shadow across the ray lies within r of
+// the triangle's own; beta det is |d x e2| times the ray's signed distance
+// from the edge v0 v2, and a ray more than r outside an edge misses every
+// such triangle. r |d x e2| <= 6 sqrt(3) D E2 kernelError lies within the
+// margin's dS E2 term (dS includes kernelError), so S multiplies only the
+// edges' roundings. To call a lane certain the kernel must hit every such
+// triangle, which a dilation does not show: there the S term keeps
+// kernelError.
+//
+// The same margins, in outsideEitherWay, drop lanes whose det is too close
+// to 0 to tell which way they face (a triangle the ray sees edge-on), for
+// the kernels never sure of a lane: a single-precision kernel's wide det
+// margin makes many such lanes, a double kernel's few.
+
 BlockRay::BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kernel) {
   const Vec3 o = (ray.origin - frame.center) * frame.scale;
   const double dSize = maxAbsComponent(ray.direction);
@@ -172,6 +191,24 @@ BlockRay::BlockRay(const Ray& ray, const BlockFrame& frame, TriangleKernel kerne
   sure_ = kernel.precision == Precision::Double && inverseDirection_ < 0x1p60f;
   kernelError_ = static_cast<float>(kernelError * up);
   originError_ = static_cast<float>((0x1p-24 * (2 * oSize + 3) + kernelError) * up);
+}
+
+int BlockRay::outsideEitherWay(__m128 det, __m128 bet, __m128 gam, __m128 mBeta, __m128 mGamma,
+                               __m128 mBetaGammaDet) {
+  const __m128 signBit = _mm_set1_ps(-0.0f);
+  const auto abs = [&](__m128 x) { return _mm_andnot_ps(signBit, x); };
+  const __m128 alpha = _mm_sub_ps(_mm_sub_ps(det, bet), gam);
+  // Its two subtractions round by at most 2u of |det| + |beta det| + |gamma
+  // det| (with room).
+  const __m128 mAlpha = _mm_add_ps(
+      mBetaGammaDet,
+      _mm_mul_ps(_mm_set1_ps(0x1p-22f), _mm_add_ps(_mm_add_ps(abs(det), abs(bet)), abs(gam))));
+  const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(bet, mBeta), _mm_cmpgt_ps(gam, mGamma)),
+                                    _mm_cmpgt_ps(alpha, mAlpha));
+  const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(bet, _mm_xor_ps(mBeta, signBit)),
+                                              _mm_cmplt_ps(gam, _mm_xor_ps(mGamma, signBit))),
+                                    _mm_cmplt_ps(alpha, _mm_xor_ps(mAlpha, signBit)));
+  return _mm_movemask_ps(_mm_and_ps(positive, negative));
 }
 
 }  // namespace meshtrace

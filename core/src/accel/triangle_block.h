@@ -152,7 +152,16 @@ class BlockRay {
   enum class Mode { Certain, Ranked };
   // Mode::Ranked also writes rank()'s bounds to `near`.
   template <Mode kMode>
-  Lanes test(TriangleBlock block, double tMin, double tMax, float* near = nullptr) const;
+  [[gnu::always_inline]] Lanes test(TriangleBlock block, double tMin, double tMax,
+                                    float* near = nullptr) const;
+  // The lanes where one of the three edge functions (beta det, gamma det,
+  // det - beta det - gamma det) is clearly positive and another clearly
+  // negative, given their margins (the third's is mBetaGammaDet plus its
+  // own roundings): the ray passes outside whichever way the triangle
+  // faces. Out of line: only the rare lanes whose det is within its margin
+  // need it, and inlined it would crowd the filter.
+  [[gnu::noinline]] static int outsideEitherWay(__m128 det, __m128 bet, __m128 gam, __m128 mBeta,
+                                                __m128 mGamma, __m128 mBetaGammaDet);
   // tMax in local units, rounded up with room for the filter's roundings.
   float farLimit(double tMax) const {
     return std::min(static_cast<float>(tMax * tScale_ * (1 + 0x1p-20)), 0x1p127f);
@@ -233,18 +242,21 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax,
   const __m128 absE2[3] = {abs(e2[0]), abs(e2[1]), abs(e2[2])};
   const __m128 dS = splat(originError_), kernelError = splat(kernelError_);
   const __m128 e1Max = max3(absE1), e2Max = max3(absE2);
-  const __m128 dE1 = add(mul(splat(u), e1Max), kernelError);
-  const __m128 dE2 = add(mul(splat(u), e2Max), kernelError);
+  const __m128 e1Rounding = mul(splat(u), e1Max), e2Rounding = mul(splat(u), e2Max);
+  const __m128 dE1 = add(e1Rounding, kernelError), dE2 = add(e2Rounding, kernelError);
   const __m128 sB = add(max3(absS), dS), e1B = add(e1Max, dE1), e2B = add(e2Max, dE2);
   const __m128 dB = splat(directionSize_);
   const __m128 twelve = splat(12.0f), floor = splat(0x1p-120f);
   const __m128 nineU = splat(9 * u);
   const __m128 twelveD = mul(twelve, dB);
-  // beta det: x = s, y = d, z = e2; gamma det: x = d, y = s, z = e1.
+  // beta det: x = s, y = d, z = e2; gamma det: x = d, y = s, z = e1. The
+  // edges' errors that S multiplies are their roundings alone: the
+  // kernel's error is a dilation of the triangle, within the dS terms (see
+  // the .cpp). A certain lane needs it as an edge error too (below).
   const __m128 mBeta =
-      add(mul(twelveD, add(mul(dS, e2B), mul(sB, add(mul(nineU, e2B), dE2)))), floor);
+      add(mul(twelveD, add(mul(dS, e2B), mul(sB, add(mul(nineU, e2B), e2Rounding)))), floor);
   const __m128 mGamma =
-      add(mul(twelveD, add(mul(dS, e1B), mul(sB, add(mul(nineU, e1B), dE1)))), floor);
+      add(mul(twelveD, add(mul(dS, e1B), mul(sB, add(mul(nineU, e1B), e1Rounding)))), floor);
   // det: x = e1, y = d, z = e2.
   const __m128 mDet =
       add(mul(twelveD, add(add(mul(dE1, e2B), mul(e1B, dE2)), mul(mul(nineU, e1B), e2B))), floor);
@@ -275,7 +287,17 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax,
     inside =
         _mm_and_ps(inside, _mm_cmpge_ps(teeS, sub(sub(mul(nearV, absDet), mT), mul(nearV, mDet))));
   }
-  const int candidates = _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+  int candidates = _mm_movemask_ps(_mm_or_ps(undecided, inside)) & valid;
+  // A lane whose det is within its margin faces no known way, so the tests
+  // above cannot drop it. One edge function clearly positive and another
+  // clearly negative still put the ray outside it, whichever way it faces.
+  // Only single-precision kernels, whose det margin is wide, have many
+  // such lanes.
+  if (!sure_) {
+    if (const int undecidedOnly = candidates & ~_mm_movemask_ps(inside))
+      candidates &=
+          ~(undecidedOnly & outsideEitherWay(det, bet, gam, mBeta, mGamma, add(mBary, mDet)));
+  }
   if constexpr (kMode == Mode::Ranked) {
     // The far test above is t det <= far (det + mDet) + mT: a lane stays
     // for exactly the limits whose far is at least (t det - mT) / (det +
@@ -301,9 +323,15 @@ inline BlockRay::Lanes BlockRay::test(TriangleBlock b, double tMin, double tMax,
   // Sums of positive terms, each rounded; so scaled they stay bounds.
   const __m128 up = splat(1 + 0x1p-20f), down = splat(1 - 0x1p-20f);
   const __m128 detLow = sub(absDet, mDet), detHigh = add(absDet, mDet);
-  __m128 sure = _mm_and_ps(_mm_cmpgt_ps(detLow, _mm_setzero_ps()),
-                           _mm_and_ps(_mm_cmpgt_ps(betS, mBeta), _mm_cmpgt_ps(gamS, mGamma)));
-  const __m128 baryHigh = add(add(betS, gamS), add(mBary, mDet));
+  // The beta and gamma margins with the kernel's error as an error of the
+  // edges, which S multiplies: the kernel must hit every triangle within
+  // its error, not just one.
+  const __m128 edgeKernel = mul(mul(twelveD, sB), kernelError);
+  const __m128 mBetaSure = add(mBeta, edgeKernel), mGammaSure = add(mGamma, edgeKernel);
+  __m128 sure =
+      _mm_and_ps(_mm_cmpgt_ps(detLow, _mm_setzero_ps()),
+                 _mm_and_ps(_mm_cmpgt_ps(betS, mBetaSure), _mm_cmpgt_ps(gamS, mGammaSure)));
+  const __m128 baryHigh = add(add(betS, gamS), add(add(mBetaSure, mGammaSure), mDet));
   sure = _mm_and_ps(sure, _mm_cmplt_ps(mul(baryHigh, up), detLow));
   // t det above tMin det and the watertight kernel's deltaT det.
   const __m128 r = add(sB, _mm_max_ps(e1B, e2B));

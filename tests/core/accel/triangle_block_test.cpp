@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "accel/binary_bvh.h"
@@ -78,6 +79,21 @@ Ray aimedRay(const Mesh& mesh, std::mt19937_64& rng) {
   return {origin, glm::normalize(d)};
 }
 
+// Rays that graze a triangle: from a point of it (inside, on an edge or on
+// a vertex), along its plane tilted by 1e-2 to 1e-12 radians, from up to
+// twice the mesh's size away. Their det is within the filter's margin, so
+// the filter cannot tell which way the triangle faces.
+Ray grazingRay(const Mesh& mesh, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto [p, n] = pointOn(mesh, rng, true);
+  Vec3 along = glm::cross(n, Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+  if (glm::length(along) == 0.0) along = glm::cross(n, Vec3(1.0, 0.0, 0.0));
+  const double tilt = (u(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -2.0 - 10.0 * u(rng));
+  const Vec3 d = glm::normalize(glm::normalize(along) + tilt * n);
+  const double away = (0.01 + 2.0 * u(rng)) * maxAbsComponent(mesh.bounds().extent());
+  return {p - away * d, d};
+}
+
 // The lanes the filter passes on to the exact kernel, as a closest-hit
 // search asks for them.
 int candidates(const BlockRay& ray, TriangleBlock block, double tMin, double tMax) {
@@ -92,12 +108,13 @@ struct FilterCount {
 // filter dropped (with no upper limit on t, with the hit's own t as the
 // limit, and with a lower limit just below it), and those a closest-hit
 // search would leave out as beyond a nearer hit at their own t (rank).
-FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::uint64_t seed) {
+FilterCount checkFilter(const Blocks& b, TriangleKernel kernel, int rays, std::uint64_t seed,
+                        Ray (*makeRay)(const Mesh&, std::mt19937_64&) = aimedRay) {
   std::mt19937_64 rng(seed);
   FilterCount c;
   const auto& v = b.mesh.vertices();
   for (int r = 0; r < rays; ++r) {
-    const Ray ray = aimedRay(b.mesh, rng);
+    const Ray ray = makeRay(b.mesh, rng);
     const BlockRay blockRay(ray, b.frame, kernel);
     const TriangleRay exact(ray, kernel);
     for (const TriangleBlock& block : b.blocks) {
@@ -162,6 +179,21 @@ TEST(TriangleBlockFilter, NeverDropsAHitOfAnyKernelAtAnyScaleOrDistance) {
   }
 }
 
+// A grazing ray meets lanes whose facing the filter cannot tell: it may
+// drop them only where the ray passes outside whichever way they face.
+TEST(TriangleBlockFilter, NeverDropsAGrazingHitOfAnyKernelAtAnyScaleOrDistance) {
+  for (const auto& m : scaledMeshes()) {
+    const Blocks b = makeBlocks(m.data);
+    for (const TriangleKernel& kernel : kKernels) {
+      const FilterCount c = checkFilter(b, kernel, 300, 43, grazingRay);
+      EXPECT_GT(c.hits, 0u) << m.name;
+      EXPECT_EQ(c.dropped, 0u) << m.name << ", " << toString(kernel.test) << " "
+                               << toString(kernel.precision) << ": " << c.dropped << " of "
+                               << c.hits << " exact hits dropped";
+    }
+  }
+}
+
 // The filter must also pay: for double kernels, nearly every triangle a ray
 // misses is dropped in float. Those within rounding of the ray pass: with
 // rays aimed exactly at edges and vertices, the neighbours sharing them
@@ -175,6 +207,26 @@ TEST(TriangleBlockFilter, DropsNearlyAllMissedTrianglesForDoubleKernels) {
               static_cast<unsigned long long>(passedMisses));
   EXPECT_LT(double(passedMisses), 0.005 * double(c.lanes));
   EXPECT_LT(passedMisses, 3 * c.hits);
+}
+
+// Single-precision kernels round the world coordinates to float, so the
+// filter lets triangles within that rounding of the ray pass too: a
+// dilation of each triangle by the kernel's error, not a margin that
+// grows with the ray's distance from it. Nearly every triangle a ray
+// misses is still dropped.
+TEST(TriangleBlockFilter, DropsNearlyAllMissedTrianglesForSingleKernels) {
+  const Blocks b = makeBlocks(makeIcosphere(Vec3(0.0), 1.0, 5));
+  for (const TriangleKernel& kernel : kKernels) {
+    if (kernel.precision != Precision::Single) continue;
+    const FilterCount c = checkFilter(b, kernel, 200, 7);
+    const std::uint64_t passedMisses = c.candidates - c.hits;
+    std::printf("%s single: lanes %llu, exact hits %llu, passed without a hit %llu\n",
+                toString(kernel.test), static_cast<unsigned long long>(c.lanes),
+                static_cast<unsigned long long>(c.hits),
+                static_cast<unsigned long long>(passedMisses));
+    EXPECT_LT(double(passedMisses), 0.005 * double(c.lanes)) << toString(kernel.test);
+    EXPECT_LT(passedMisses, 3 * c.hits) << toString(kernel.test);
+  }
 }
 
 // With tMin = 0, as every query of a render has, a triangle the ray's line
