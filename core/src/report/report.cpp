@@ -124,9 +124,11 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) 
   const Integrator integrator(intersector);
   const int w = scene.camera.width(), h = scene.camera.height(), step = config.step;
   Image image(w, h);
-  // One traced pixel per step x step block, repeated over the block.
+  // One traced pixel per step x step block, repeated over the block. Each
+  // tile keeps its lights' last blockers, as raytrace's render does.
   const int blocksX = (w + step - 1) / step, blocksY = (h + step - 1) / step;
   forEachTile(blocksX, blocksY, 8, threads, [&](const auto& rows, const auto& cols, Counters& c) {
+    LastBlockers blockers(scene);
     for (int by = rows.begin(); by < rows.end(); ++by)
       for (int bx = cols.begin(); bx < cols.end(); ++bx) {
         const int row = by * step, x = bx * step;
@@ -134,7 +136,7 @@ Image renderConfig(const Scene& scene, const ReportConfig& config, int threads) 
         for (int k = 0; k < config.samples; ++k) {
           double dx = 0.0, dy = 0.0;
           if (k > 0) sampleOffset(k, dx, dy);
-          color += integrator.pixel(x + dx, flippedRow(row, h) + dy, c);
+          color += integrator.pixel(x + dx, flippedRow(row, h) + dy, c, &blockers);
         }
         color /= double(config.samples);
         for (int r = row; r < std::min(h, row + step); ++r)
