@@ -16,14 +16,16 @@ void putColor(std::uint8_t* out, const Color& c) {
 
 void ViewTextures::fit(const ProgressiveFrame& frame, bool withOverlay) {
   const std::size_t bytes = static_cast<std::size_t>(frame.width) * frame.height * 4;
+  // The overlay's buffer is made only once an overlay is shown: the frame
+  // that shows a scene's first image need not fill one.
+  const bool overlayMade = withOverlay && overlayRgba_.size() != bytes;
   const bool resized = image_.width() != frame.width || image_.height() != frame.height ||
-                       stale_.size() != frame.tileStep.size() || (withOverlay && !overlay_.valid());
+                       stale_.size() != frame.tileStep.size() ||
+                       (withOverlay && !overlay_.valid()) || overlayMade;
   image_.resize(frame.width, frame.height);
   if (withOverlay) overlay_.resize(frame.width, frame.height);
-  if (viewRgba_.size() != bytes) {
-    viewRgba_.assign(bytes, 0);
-    overlayRgba_.assign(bytes, 0);
-  }
+  if (viewRgba_.size() != bytes) viewRgba_.assign(bytes, 0);
+  if (overlayMade) overlayRgba_.assign(bytes, 0);
   if (resized) {
     stale_.assign(frame.tileStep.size(), 0);
     markAll();
