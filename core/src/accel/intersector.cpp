@@ -6,6 +6,7 @@
 
 #include "accel/primitive_query.h"
 #include "accel/scene_bvh.h"
+#include "accel/slab_ray.h"
 #include "meshtrace/util/enum_names.h"
 #include "util/lanes.h"
 
@@ -76,7 +77,8 @@ namespace {
 
 // Brute force: every primitive, in the order that defines ties
 // (primitive_query.h), a mesh's triangles only after its box with the aabb
-// method. Returns whether the search ended early.
+// method, padded so that it holds every hit the kernel reports (boxPadding).
+// Returns whether the search ended early.
 template <typename Search>
 bool bruteForce(const Scene& scene, AccelMethod accel, Search& search, Counters& counters) {
   const auto shapes = [&](ObjectKind kind, std::size_t n) {
@@ -95,9 +97,12 @@ bool bruteForce(const Scene& scene, AccelMethod accel, Search& search, Counters&
     const Mesh& mesh = scene.meshes[m];
     if (accel == AccelMethod::BoundingBox) {
       ++counters.boxTests;
+      const Aabb& box = mesh.bounds();
+      const SlabPadding pad =
+          boxPadding(query.kernel(), query.ray().origin,
+                     std::max(maxAbsComponent(box.min), maxAbsComponent(box.max)));
       double tEnter, tExit;
-      if (!intersectSlabs(mesh.bounds(), inverse, query.tMin(), search.limit(), tEnter, tExit))
-        continue;
+      if (!intersectSlabs(box, inverse, query.tMin(), search.limit(), tEnter, tExit, pad)) continue;
     }
     const auto count = static_cast<std::uint32_t>(mesh.triangles().size());
     for (std::uint32_t t = 0; t < count; ++t)

@@ -352,9 +352,10 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
 // A ray spawned from a face that lies on the triangle BVH's box (a box, a
 // CAD part, a wall) starts outside that box by the spawn offset, a rounding's
 // width. The float boxes are padded far wider, so it would enter the root
-// and filter the blocks around its start for nothing. The box's exact double
-// test (conservative, as --accel aabb's) turns it away first; a ray that
-// starts inside the box, as most spawned rays do, pays six comparisons.
+// and filter the blocks around its start for nothing. The box's double
+// test, exact for the default kernel and padded as --accel aabb's for the
+// others (boxPadding), turns it away first; a ray that starts inside the
+// box, as most spawned rays do, pays six comparisons.
 [[gnu::always_inline]] inline bool SceneBvh::leavesTheMeshBvhBox(const PrimitiveQuery& query,
                                                                  double tLimit) const {
   if (!query.startsOnTriangle()) return false;
@@ -363,8 +364,14 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
   if (o.x >= box.min.x && o.x <= box.max.x && o.y >= box.min.y && o.y <= box.max.y &&
       o.z >= box.min.z && o.z <= box.max.z)
     return false;
+  return missesTheMeshBvhBox(query, tLimit);
+}
+
+bool SceneBvh::missesTheMeshBvhBox(const PrimitiveQuery& query, double tLimit) const {
   double tEnter, tExit;
-  return !intersectSlabs(box, RayInverse(query.ray()), query.tMin(), tLimit, tEnter, tExit);
+  return !intersectSlabs(meshBvh_.triangles.bounds(), RayInverse(query.ray()), query.tMin(), tLimit,
+                         tEnter, tExit,
+                         boxPadding(query.kernel(), query.ray().origin, sceneScale_));
 }
 
 template <typename Search>

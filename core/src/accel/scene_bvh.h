@@ -73,6 +73,9 @@ class SceneBvh {
   // Whether a ray spawned from a triangle turns away from the triangle BVH
   // before its float boxes (below).
   bool leavesTheMeshBvhBox(const PrimitiveQuery& query, double tLimit) const;
+  // Its test for a ray that starts outside the box, out of line: the
+  // queries are large enough, and most rays start inside.
+  [[gnu::noinline]] bool missesTheMeshBvhBox(const PrimitiveQuery& query, double tLimit) const;
   // trace() with the ray's slab ray already made.
   template <typename Search>
   bool traceBounded(const SlabRay& ray, Search& search, Counters& counters) const;

@@ -13,36 +13,39 @@
 #include <cstdint>
 
 #include "accel/bvh8.h"
+#include "meshtrace/geometry/aabb.h"
+#include "meshtrace/geometry/triangle.h"
 #include "meshtrace/util/math.h"
 
 namespace meshtrace {
 
-// How much wider than exact a box test must be. Ize ("Robust BVH Ray
-// Traversal", JCGT 2(2) 2013) pads the far distance by 1 + 2 gamma(3)
-// (~7e-16) to cover the slab test's own rounding. Ours must be wider, because
-// a box must hold not the exact hit but the one the kernels compute:
-// - `relative` scales the near distance by 1 - relative and the far one by
-//   1 + relative. A kernel's t is off by about u t / cos(theta) for a ray at
-//   angle theta to a triangle, and a quadric's root by up to about sqrt(u) t
-//   for a grazing ray (cancellation in the discriminant).
-// - `absolute` widens every box by that distance on each side: the kernels'
-//   rounding of the ray origin and of the vertices, about u (|o| + |v|), which
-//   does not shrink with t (a float kernel rounds the origin to float).
-struct SlabPadding {
-  double relative;
-  double absolute;
-};
-
 // The padding for kernels with unit roundoff `u` (2^-53 or 2^-24), a ray
-// origin and a scene whose coordinates are at most `sceneScale` in size.
+// origin and a scene whose coordinates are at most `sceneScale` in size:
+// twice the slack within which a triangle kernel's hits lie (HitSlack,
+// triangle.h), which leaves room for the float test's own roundings.
 // Double: 2^-20 covers the quadrics' sqrt(u) ~ 1e-8 and cos(theta) down to
 // ~1e-9; the absolute pad is 2^23 u. Float: 2^-12 and 2^-14, that is 2^12 u
 // and 2^10 u.
 inline SlabPadding slabPadding(bool singlePrecisionTriangles, const Vec3& origin,
                                double sceneScale) {
   const double scale = maxAbsComponent(origin) + sceneScale;
-  return singlePrecisionTriangles ? SlabPadding{0x1p-12, 0x1p-14 * scale}
-                                  : SlabPadding{0x1p-20, 0x1p-30 * scale};
+  const HitSlack slack = hitSlack(singlePrecisionTriangles ? Precision::Single : Precision::Double);
+  return SlabPadding{2 * slack.relative, 2 * slack.absolute * scale};
+}
+
+// The padding of a double-precision box test (intersectSlabs) of a box
+// around triangles whose coordinates are at most `scale` in size, so that
+// it holds every hit `kernel` reports on them: slabPadding for Cramer and
+// Moller-Trumbore, whose hits may lie up to their HitSlack outside their
+// triangle's box, and for every single-precision kernel, whose corners,
+// rounded to float, may lie outside the double box. None for the default
+// kernel, the watertight one in double, whose hits lie within a few
+// roundings of their triangle's box: exact, the test can still turn away a
+// ray spawned from a face on the box, which starts outside it by about as
+// little (the spawn offset), where the padding would take it in.
+inline SlabPadding boxPadding(TriangleKernel kernel, const Vec3& origin, double scale) {
+  if (kernel.test == TriangleTest::Watertight && kernel.precision == Precision::Double) return {};
+  return slabPadding(kernel.precision == Precision::Single, origin, scale);
 }
 
 // The ray prepared for float slab tests that stay conservative: every box is

@@ -26,6 +26,38 @@ bool accept(Real t, Real beta, Real gamma, TriangleHit& out) {
   return true;
 }
 
+// Cramer's rule and Moller-Trumbore find beta, gamma and t as three
+// quotients by one det. For a sliver, or a ray nearly in the triangle's
+// plane, det is small against the rounding of the numerators, and the three
+// need not describe one point: the kernel may report a hit far outside the
+// triangle, where no box around the triangle holds it, so the BVH would
+// miss what brute force finds. These two kernels therefore refuse a hit
+// whose point o + t d lies outside the triangle's box by more than
+// hitSlack, the same for every acceleration method. (In the kernel's
+// precision: its roundings, and those of the float corners and ray against
+// the double ones, are far inside the BVH's padding, twice the slack.) The
+// watertight kernel's t is a convex combination of its corners' sheared
+// depths, its point within a few roundings of the box; it needs no such
+// test.
+template <typename Real>
+bool nearTheBox(const Setup<Real>& r, const V3<Real>& a, const V3<Real>& b, const V3<Real>& c,
+                Real t) {
+  constexpr HitSlack slack =
+      hitSlack(sizeof(Real) == sizeof(double) ? Precision::Double : Precision::Single);
+  const V3<Real> lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+  const V3<Real> o = r.origin, along = t * r.direction;
+  const Real size = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)}) +
+                    std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x),
+                              std::abs(hi.y), std::abs(hi.z)});
+  const Real absolute = Real(slack.absolute) * size;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Real p = o[axis] + along[axis];
+    const Real room = absolute + Real(slack.relative) * std::abs(along[axis]);
+    if (!(p >= lo[axis] - room && p <= hi[axis] + room)) return false;
+  }
+  return true;
+}
+
 // Cramer's rule: substituting alpha = 1 - beta - gamma gives the system
 //   [B-A  C-A  -d] (beta, gamma, t)^T = o - A.
 // Each determinant is a triple product; the numerators share s x d.
@@ -45,6 +77,7 @@ bool cramer(const Setup<Real>& r, const V3<Real>& a, const V3<Real>& b, const V3
   if (gamma < 0 || beta + gamma > 1) return false;
   const Real t = glm::dot(n, s) * inv;
   if (!(t > tMin && t < tMax)) return false;  // also rejects NaN
+  if (!nearTheBox(r, a, b, c, t)) return false;
   return accept(t, beta, gamma, out);
 }
 
@@ -66,6 +99,7 @@ bool mollerTrumbore(const Setup<Real>& r, const V3<Real>& a, const V3<Real>& b, 
   if (gamma < 0 || beta + gamma > 1) return false;
   const Real t = glm::dot(e2, q) * inv;
   if (!(t > tMin && t < tMax)) return false;
+  if (!nearTheBox(r, a, b, c, t)) return false;
   return accept(t, beta, gamma, out);
 }
 

@@ -5,8 +5,10 @@
 // barycentrics, and its any-hit query must agree with the closest hit. Rays
 // spawned off the hits, told the triangle they leave, must agree too; so must
 // packets of four rays, the BVH with children fetched ahead, and meshes full
-// of exact copies of their triangles, of which the BVH holds two. Also the
-// accel method's default, names and parsing.
+// of exact copies of their triangles, of which the BVH holds two. So must
+// the BVH and --accel aabb on slivers, with every kernel, and with
+// single-precision kernels far from the origin. Also the accel method's
+// default, names and parsing.
 #include "meshtrace/accel/intersector.h"
 
 #include <gtest/gtest.h>
@@ -182,14 +184,14 @@ bool sameHit(bool foundA, const Hit& a, bool foundB, const Hit& b) {
 }
 
 // Casts `count` random rays (a share of them under AddressSanitizer)
-// through the BVH and brute force and counts where they disagree: in the
+// through the BVH (or `accel`) and brute force and counts where they disagree: in the
 // closest hit, in any-hit against brute force, in any-hit against the
 // closest hit, and for a ray spawned off each hit.
 Disagreements compare(const Scene& scene, std::uint64_t count, std::uint64_t seed,
-                      TriangleKernel kernel = {}, const SceneBvhOptions& bvhOptions = {}) {
+                      TriangleKernel kernel = {}, const SceneBvhOptions& bvhOptions = {},
+                      AccelMethod accel = AccelMethod::Bvh) {
   count = test::sanitizerShare(count);
-  const SceneIntersector bvh(scene,
-                             {.accel = AccelMethod::Bvh, .triangle = kernel, .bvh = bvhOptions});
+  const SceneIntersector bvh(scene, {.accel = accel, .triangle = kernel, .bvh = bvhOptions});
   const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = kernel});
   const Aabb box = sceneBox(scene);
   const bool exactLimit = kernel.test != TriangleTest::Watertight;
@@ -321,6 +323,128 @@ TEST(BvhAgreesWithBruteForce, EveryTriangleKernel) {
       const std::string label = std::string(toString(test)) + "/" + toString(precision);
       expectAgreement(label.c_str(), compare(scene, 40000, 6, {test, precision}));
     }
+}
+
+// Long triangles a hundredth to a hundred-millionth as wide, around
+// `center`.
+MeshData slivers(int n, const Vec3& center, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0), along(-0.5, 0.5), exponent(-8.0, -2.0);
+  MeshData m;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 axis = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0, 0.0, 1e-3));
+    const Vec3 across = glm::normalize(glm::cross(axis, Vec3(u(rng), u(rng), u(rng))));
+    const Vec3 mid = center + Vec3(u(rng), u(rng), u(rng));
+    const double length = 1.0 + 0.5 * u(rng), width = std::pow(10.0, exponent(rng));
+    const auto next = static_cast<std::uint32_t>(m.vertices.size());
+    m.vertices.push_back(mid - 0.5 * length * axis);
+    m.vertices.push_back(mid + 0.5 * length * axis);
+    m.vertices.push_back(mid + along(rng) * length * axis + width * length * across);
+    m.triangles.push_back({next, next + 1, next + 2});
+  }
+  return m;
+}
+
+// On slivers Cramer's rule and Moller-Trumbore compute det with few or no
+// correct digits, and beta, gamma and t need not describe one point: they
+// may report a hit far outside the triangle, which no box around it holds,
+// unless they refuse it (TriangleRay::intersect). Both the BVH and the
+// per-mesh boxes must find what brute force finds, with every kernel.
+TEST(BvhAgreesWithBruteForce, SliversForEveryKernelNearAndFarFromTheOrigin) {
+  std::mt19937_64 rng(23);
+  const Scene near = meshScene({makeMesh("slivers", slivers(300, Vec3(0.3, -0.2, 0.1), rng))});
+  const Scene far = meshScene({makeMesh("slivers", slivers(300, Vec3(3e6, -1e6, 2e6), rng))});
+  for (const TriangleKernel& k : allTriangleKernels())
+    for (const AccelMethod accel : {AccelMethod::Bvh, AccelMethod::BoundingBox}) {
+      const std::string label =
+          std::string(toString(accel)) + " " + toString(k.test) + "/" + toString(k.precision);
+      expectAgreement((label + " near").c_str(), compare(near, 20000, 31, k, {}, accel));
+      expectAgreement((label + " far").c_str(), compare(far, 20000, 32, k, {}, accel));
+    }
+}
+
+// Far from the origin a single-precision kernel's corners, rounded to
+// float, lie outside the mesh's double box (here by up to 2, half a float's
+// spacing at 6e7): a ray can meet a float triangle and miss that box.
+// --accel aabb pads its boxes as the BVH does, so both find what brute
+// force finds, here for rays at a grazing angle over a flat mesh, aimed at
+// its whole extent and beyond.
+TEST(BvhAgreesWithBruteForce, FlatMeshFarFromTheOriginInSinglePrecision) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(-20.0, 20.0);
+  const Vec3 center(61892616.26, 0.0, 0.0334);
+  MeshData m;
+  for (std::uint32_t i = 0; i < 600; ++i) {
+    for (int k = 0; k < 3; ++k) m.vertices.push_back(center + Vec3(u(rng), u(rng), 0.0));
+    m.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  const Scene scene = meshScene({makeMesh("flat", std::move(m))});
+  const Vec3 eye = center + Vec3(143.4, 146.7, -139.6);
+  for (const TriangleTest test :
+       {TriangleTest::Watertight, TriangleTest::Cramer, TriangleTest::MollerTrumbore}) {
+    const TriangleKernel k{test, Precision::Single};
+    const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = k});
+    for (const AccelMethod accel : {AccelMethod::Bvh, AccelMethod::BoundingBox}) {
+      const SceneIntersector fast(scene, {.accel = accel, .triangle = k});
+      std::uint64_t rays = 0, hits = 0, differences = 0;
+      Counters c;
+      for (double x = -25.0; x <= 25.0; x += 0.25)
+        for (double y = -25.0; y <= 25.0; y += 0.25) {
+          const Ray ray{eye, glm::normalize(center + Vec3(x, y, 0.0) - eye)};
+          Hit a, b;
+          const bool fa = fast.closestHit(ray, 0.0, a, c), fb = brute.closestHit(ray, 0.0, b, c);
+          ++rays;
+          hits += fb;
+          differences += !sameHit(fa, a, fb, b);
+        }
+      const std::string label = std::string(toString(accel)) + " " + toString(test);
+      std::printf("[ figures  ] %-16s %llu rays, %llu hits, differences %llu\n", label.c_str(),
+                  static_cast<unsigned long long>(rays), static_cast<unsigned long long>(hits),
+                  static_cast<unsigned long long>(differences));
+      EXPECT_GT(hits, rays / 5) << label;
+      EXPECT_EQ(differences, 0u) << label;
+    }
+  }
+}
+
+// 1.9e8 from the origin floats are 16 apart: a single-precision kernel sees
+// these triangles, and a shadow ray's origin, snapped to that grid. The ray,
+// spawned off the first triangle, starts outside the triangle BVH's double
+// box and leaves it, yet meets the second triangle's float copy at t = 0.04.
+// The box test that turns such rays away is padded for these kernels
+// (boxPadding), so the BVH answers as brute force does.
+TEST(BvhAgreesWithBruteForce, SpawnedRayMeetingAFloatTriangleOutsideTheDoubleBox) {
+  MeshData m;
+  m.vertices = {{-0.66077927058253094, -2.3642757088100081, -188973240.29516175},
+                {-0.99854159902504425, -2.1587971373237975, -188973240.27678156},
+                {-0.020807356134898116, -2.7560303718184769, -188973239.19776794},
+                {0.13689582222667901, -1.5588818211102662, -188973240.06359836},
+                {-0.77551466834993799, -2.1435993485154499, -188973239.28821546},
+                {0.79291825314120978, -2.0498644782861759, -188973239.8446967},
+                {0.5, 0.5, -188973250.0},
+                {1.5, 0.5, -188973250.0},
+                {0.5, 1.5, -188973250.0}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
+  const Scene scene = meshScene({makeMesh("far", std::move(m))});
+  const Ray shadow{Vec3(-0.69579648971557617, -2.1740946769714355, -188973232.0),
+                   Vec3(-0.41058438582989831, 0.87877814880903815, -0.24324766656320684)};
+  const PrimitiveRef start{ObjectKind::Mesh, 0, 0};
+  for (const TriangleTest test :
+       {TriangleTest::Watertight, TriangleTest::Cramer, TriangleTest::MollerTrumbore}) {
+    const TriangleKernel k{test, Precision::Single};
+    const SceneIntersector bvh(scene, {.accel = AccelMethod::Bvh, .triangle = k});
+    const SceneIntersector brute(scene, {.accel = AccelMethod::None, .triangle = k});
+    ASSERT_EQ(bvh.bvhStats()->trianglesInBvhs, 3u);
+    Counters c;
+    Hit a, b;
+    const bool fa = bvh.closestHit(shadow, kSpawnTMin, a, c, &start);
+    const bool fb = brute.closestHit(shadow, kSpawnTMin, b, c, &start);
+    EXPECT_TRUE(fb) << toString(test) << ": the float copy is no longer met";
+    EXPECT_TRUE(sameHit(fa, a, fb, b)) << toString(test) << ": bvh " << describe(shadow, a)
+                                       << " | brute force " << describe(shadow, b);
+    EXPECT_EQ(bvh.occluded(shadow, kSpawnTMin, 89.4, c, &start),
+              brute.occluded(shadow, kSpawnTMin, 89.4, c, &start))
+        << toString(test);
+  }
 }
 
 // Meshes full of exact copies of their triangles, of which the BVH holds

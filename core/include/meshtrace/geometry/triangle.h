@@ -36,6 +36,21 @@ struct TriangleKernel {
   Precision precision = Precision::Double;
 };
 
+// How far outside its triangle's bounding box a kernel's hit point may lie:
+// on each axis, `relative` of the hit's distance along that axis (t |d|),
+// plus `absolute` times the largest coordinate of the ray's origin plus
+// that of the triangle. Cramer and Moller-Trumbore refuse hits beyond it (see
+// triangle.cpp); the watertight kernel's hits lie within a few
+// roundings of the box. The BVH pads its boxes by twice as much
+// (slab_ray.h), so it holds every hit a kernel reports.
+struct HitSlack {
+  double relative;
+  double absolute;
+};
+constexpr HitSlack hitSlack(Precision precision) {
+  return precision == Precision::Double ? HitSlack{0x1p-21, 0x1p-31} : HitSlack{0x1p-13, 0x1p-15};
+}
+
 struct TriangleHit {
   double t;
   double beta, gamma;  // alpha = 1 - beta - gamma
@@ -47,7 +62,9 @@ class TriangleRay {
  public:
   TriangleRay(const Ray& ray, TriangleKernel kernel);
 
-  // Accepts a hit with alpha, beta, gamma >= 0 and tMin < t < tMax.
+  // Accepts a hit with alpha, beta, gamma >= 0 and tMin < t < tMax (for
+  // Cramer and Moller-Trumbore, at a point within hitSlack of the
+  // triangle's box).
   bool intersect(const Vec3& a, const Vec3& b, const Vec3& c, double tMin, double tMax,
                  TriangleHit& out) const;
 
