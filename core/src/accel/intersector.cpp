@@ -99,8 +99,7 @@ bool bruteForce(const Scene& scene, AccelMethod accel, Search& search, Counters&
       ++counters.boxTests;
       const Aabb& box = mesh.bounds();
       const SlabPadding pad =
-          boxPadding(query.kernel(), query.ray().origin,
-                     std::max(maxAbsComponent(box.min), maxAbsComponent(box.max)));
+          boxPadding(query.kernel(), query.ray().origin, box.largestCoordinate());
       double tEnter, tExit;
       if (!intersectSlabs(box, inverse, query.tMin(), search.limit(), tEnter, tExit, pad)) continue;
     }

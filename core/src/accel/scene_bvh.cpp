@@ -321,8 +321,7 @@ SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(
       add(ObjectKind::Mesh, i, scene.meshes[i].bounds());
   if (!meshBvh_.empty()) add(ObjectKind::Mesh, kMeshBvh, meshBvh_.triangles.bounds());
   top_ = collapseToBvh8(buildBvh(boxes, options.top));
-  for (const Aabb& b : boxes)
-    sceneScale_ = std::max({sceneScale_, maxAbsComponent(b.min), maxAbsComponent(b.max)});
+  for (const Aabb& b : boxes) sceneScale_ = std::max(sceneScale_, b.largestCoordinate());
 
   stats_.topLevelObjects = objects_.size();
   stats_.topLevelBytes = top_.bytes() + objects_.size() * sizeof(Object);

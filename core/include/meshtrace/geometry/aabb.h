@@ -1,5 +1,7 @@
 #pragma once
 // Axis-aligned box and its ray slab test.
+#include <algorithm>
+
 #include "meshtrace/util/math.h"
 
 namespace meshtrace {
@@ -19,6 +21,8 @@ struct Aabb {
   bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
   Vec3 extent() const { return max - min; }
   Vec3 center() const { return 0.5 * (min + max); }
+  // The largest |coordinate| of its corners: the size of the numbers in it.
+  double largestCoordinate() const { return std::max(maxAbsComponent(min), maxAbsComponent(max)); }
 };
 
 // The reciprocal direction, computed once per ray and reused for every box.
