@@ -315,7 +315,7 @@ std::vector<int> ProgressiveRenderer::Impl::update(ProgressiveFrame& frame) cons
     const int c0 = (t % job->tilesX) * job->tile, r0 = (t / job->tilesX) * job->tile;
     const int c1 = std::min(c0 + job->tile, job->width);
     const int r1 = std::min(r0 + job->tile, job->height);
-    const std::vector<std::uint8_t>& rgba = job->buffers->rgba;
+    const auto& rgba = job->buffers->rgba;
     for (int r = r0; r < r1; ++r) {
       const std::size_t a = job->index(c0, r), b = job->index(c1, r);
       std::copy(rgba.begin() + a * 4, rgba.begin() + b * 4, frame.rgba.begin() + a * 4);

@@ -13,6 +13,7 @@
 #include "meshtrace/io/image.h"
 #include "meshtrace/render/integrator.h"
 #include "meshtrace/render/progressive.h"
+#include "util/build_vector.h"
 
 namespace meshtrace {
 
@@ -27,14 +28,17 @@ inline double msBetween(Clock::time_point a, Clock::time_point b) {
 // on the caller's (a viewer's UI) thread, and once the job and the frames
 // reading its probes let go of it, it serves the next job, which overwrites
 // every element before anyone reads it: while a camera is dragged, a new
-// job starts every frame.
+// job starts every frame. The first job at a size, or the first to need
+// probes (48 bytes a pixel), gets new memory: BuildVector's huge pages make
+// that a few page faults rather than one per 4 KiB, which had held up the
+// first image of a new size or view by tens of milliseconds.
 struct Buffers {
-  std::vector<Color> sum;          // worker side: sum of the samples per pixel, for AA passes
-  std::vector<PixelProbe> probes;  // written once per pixel, read where published
-  std::vector<std::uint8_t> rgba;  // published colours, under the tile's lock
+  BuildVector<Color> sum;          // worker side: sum of the samples per pixel, for AA passes
+  BuildVector<PixelProbe> probes;  // written once per pixel, read where published
+  BuildVector<std::uint8_t> rgba;  // published colours, under the tile's lock
   // With anti-aliasing passes: each tile's exact colours, copied from
   // `rgba` when its exact pass is published and never changed after.
-  std::vector<std::uint8_t> exactRgba;
+  BuildVector<std::uint8_t> exactRgba;
 };
 
 class BufferPool : public std::enable_shared_from_this<BufferPool> {
@@ -243,7 +247,7 @@ struct Job {
   // `fresh`: the colours `pass` traced, by position in the tile.
   void publish(int t, int pass, int step, int c0, int r0, int c1, int r1,
                const std::vector<std::array<std::uint8_t, 4>>& fresh, const Counters& work) {
-    std::vector<std::uint8_t>& rgba = buffers->rgba;
+    auto& rgba = buffers->rgba;
     std::unique_lock<std::mutex> lock(tileLock(t));
     // Only the pixels just traced: a reader takes each coarser pixel for the
     // block it is the corner of, as the tile's step says.

@@ -8,7 +8,7 @@ namespace meshtrace {
 
 namespace {
 
-bool isLarge(std::size_t bytes) { return bytes >= kLargePageBytes; }
+bool isLarge(std::size_t bytes) { return bytes >= kLargePageBytes / 2; }
 
 }  // namespace
 
