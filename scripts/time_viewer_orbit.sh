@@ -31,8 +31,8 @@ for ((r = 1; r <= rounds; ++r)); do
     sleep 0.1
   done
   # The image's middle, in the window at 0,0; a step every 10 ms, all in
-  # one xdotool process: starting a process per step took 20-100 ms on
-  # some virtual machines, which then set the pace instead of the viewer.
+  # one xdotool process: where starting a process is slow, a process a
+  # step would set the pace instead of the viewer.
   drag=(mousemove 575 370 mousedown 1)
   steps=$((drag_seconds * 100))
   for ((i = 1; i <= steps; ++i)); do

@@ -30,8 +30,8 @@ inline double msBetween(Clock::time_point a, Clock::time_point b) {
 // every element before anyone reads it: while a camera is dragged, a new
 // job starts every frame. The first job at a size, or the first to need
 // probes (48 bytes a pixel), gets new memory: BuildVector's huge pages make
-// that a few page faults rather than one per 4 KiB, which had held up the
-// first image of a new size or view by tens of milliseconds.
+// that a few page faults rather than one per 4 KiB, which where faults are
+// dear held up the first image of a new size or view.
 struct Buffers {
   BuildVector<Color> sum;          // worker side: sum of the samples per pixel, for AA passes
   BuildVector<PixelProbe> probes;  // written once per pixel, read where published
