@@ -16,6 +16,13 @@ TEST(BuildVector, LargeBuffersStartOnAHugePageBoundary) {
   EXPECT_TRUE(startsOnHugePage(large.data()));
 }
 
+// An 800 x 600 RGBA image (a progressive job's colours) is under 2 MiB
+// and still gets a huge page of its own: one page fault, not 469.
+TEST(BuildVector, ImageSizedBuffersStartOnAHugePageBoundary) {
+  BuildVector<std::uint8_t> rgba(800 * 600 * 4);
+  EXPECT_TRUE(startsOnHugePage(rgba.data()));
+}
+
 TEST(BuildVector, KeepsItsContentsWhenGrowingPastTheLargeSize) {
   BuildVector<std::uint64_t> values;
   const std::size_t n = 3 * kLargePageBytes / sizeof(std::uint64_t);
