@@ -22,13 +22,13 @@ void Texture::resize(int width, int height) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
 }
 
-void Texture::upload(const std::uint8_t* rgba, int x0, int y0, int x1, int y1) {
+void Texture::upload(const std::uint8_t* rows, int x0, int y0, int x1, int y1) {
   if (!id_ || x1 <= x0 || y1 <= y0) return;
   glBindTexture(GL_TEXTURE_2D, id_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, width_);
   glTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x1 - x0, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
-                  rgba + (static_cast<std::size_t>(y0) * width_ + x0) * 4);
+                  rows + static_cast<std::size_t>(x0) * 4);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 

@@ -15,9 +15,10 @@ class Texture {
 
   // (Re)allocates when the size changes; contents are then undefined.
   void resize(int width, int height);
-  // Uploads rows [y0, y1) and columns [x0, x1) of a full-size RGBA image
-  // stored top row first (rows are drawn top first too).
-  void upload(const std::uint8_t* rgba, int x0, int y0, int x1, int y1);
+  // Uploads rows [y0, y1) and columns [x0, x1) from `rows`: RGBA rows as
+  // wide as the texture, stored top row first (rows are drawn top first
+  // too), the first of them row y0.
+  void upload(const std::uint8_t* rows, int x0, int y0, int x1, int y1);
   void uploadAll(const std::uint8_t* rgba) { upload(rgba, 0, 0, width_, height_); }
 
   unsigned id() const { return id_; }

@@ -15,17 +15,17 @@ void putColor(std::uint8_t* out, const Color& c) {
 }  // namespace
 
 void ViewTextures::fit(const ProgressiveFrame& frame, bool withOverlay) {
-  const std::size_t bytes = static_cast<std::size_t>(frame.width) * frame.height * 4;
-  // The overlay's buffer is made only once an overlay is shown: the frame
-  // that shows a scene's first image need not fill one.
-  const bool overlayMade = withOverlay && overlayRgba_.size() != bytes;
-  const bool resized = image_.width() != frame.width || image_.height() != frame.height ||
-                       stale_.size() != frame.tileStep.size() ||
-                       (withOverlay && !overlay_.valid()) || overlayMade;
+  const auto sizeDiffers = [&](const gl::Texture& t) {
+    return !t.valid() || t.width() != frame.width || t.height() != frame.height;
+  };
+  // A texture made or resized now holds nothing yet: every tile is coloured again.
+  const bool resized = sizeDiffers(image_) || stale_.size() != frame.tileStep.size() ||
+                       (withOverlay && sizeDiffers(overlay_));
   image_.resize(frame.width, frame.height);
   if (withOverlay) overlay_.resize(frame.width, frame.height);
-  if (viewRgba_.size() != bytes) viewRgba_.assign(bytes, 0);
-  if (overlayMade) overlayRgba_.assign(bytes, 0);
+  const std::size_t rowOfTiles = static_cast<std::size_t>(frame.width) * frame.tileSize * 4;
+  viewRgba_.resize(rowOfTiles);
+  if (withOverlay) overlayRgba_.resize(rowOfTiles);
   if (resized) {
     stale_.assign(frame.tileStep.size(), 0);
     markAll();
@@ -55,11 +55,13 @@ void ViewTextures::colorTile(const ProgressiveFrame& frame, int t, View view, Ov
   const int c1 = std::min(c0 + frame.tileSize, frame.width);
   const int r1 = std::min(r0 + frame.tileSize, frame.height);
   const int step = std::max(1, frame.tileStep[t]);
+  // Pixel (c, r) in the frame, and in the staging rows of the tile's row.
   const auto at = [&](int c, int r) { return (static_cast<std::size_t>(r) * frame.width + c) * 4; };
+  const auto staged = [&](int c, int r) { return at(c, r - r0); };
   if (!probeView && frame.tileStep[t] == 1) {
     // Exact colours: whole rows as they are.
     for (int r = r0; r < r1; ++r)
-      std::copy(&frame.rgba[at(c0, r)], &frame.rgba[at(c1, r)], &viewRgba_[at(c0, r)]);
+      std::copy(&frame.rgba[at(c0, r)], &frame.rgba[at(c1, r)], &viewRgba_[staged(c0, r)]);
     if (!withOverlay) return;
   }
   // Each traced pixel stands for the step x step block it is the corner of:
@@ -76,8 +78,8 @@ void ViewTextures::colorTile(const ProgressiveFrame& frame, int t, View view, Ov
       const bool viewDone = !probeView && frame.tileStep[t] == 1;
       for (int r = br; r < std::min(br + step, r1); ++r)
         for (int c = bc; c < std::min(bc + step, c1); ++c) {
-          if (!viewDone) std::copy(viewColor, viewColor + 4, &viewRgba_[at(c, r)]);
-          if (withOverlay) std::copy(heat, heat + 4, &overlayRgba_[at(c, r)]);
+          if (!viewDone) std::copy(viewColor, viewColor + 4, &viewRgba_[staged(c, r)]);
+          if (withOverlay) std::copy(heat, heat + 4, &overlayRgba_[staged(c, r)]);
         }
     }
 }

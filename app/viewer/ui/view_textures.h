@@ -39,6 +39,9 @@ class ViewTextures {
   void upload(const ProgressiveFrame& frame, int row, int firstTile, int endTile, bool withOverlay);
 
   std::vector<char> stale_;  // per tile
+  // The colours of one row of tiles on their way to the textures: a row's
+  // stale tiles are coloured and uploaded in one go (refresh), so nothing
+  // image-sized is kept, and a new image size writes no new memory here.
   std::vector<std::uint8_t> viewRgba_, overlayRgba_;
   gl::Texture image_, overlay_;
 };
