@@ -1,10 +1,11 @@
 #pragma once
 // A vector whose resize leaves trivially constructible elements unwritten,
-// for the build's large buffers that are filled, in parallel, right after
-// they are sized. Value-initialising them first would write every page from
-// one thread, each first write a page fault, before the fill writes them all
-// again: a zero fill costs a large first build about a quarter of its
-// blocks' time.
+// for large buffers that are filled right after they are sized: the
+// build's, filled in parallel, and a progressive job's per-pixel buffers
+// (render/progressive_job.h). Value-initialising them first would write
+// every page from one thread, each first write a page fault, before the
+// fill writes them all again: a zero fill costs a large first build about
+// a quarter of its blocks' time.
 #include <cstddef>
 #include <memory>
 #include <new>
