@@ -7,7 +7,10 @@
 # frame while the scene opened and rendered, with the UI thread's own
 # processor time in it (the rest it waited for a core or for GL), and
 # that frame's whole log line (the kernel's share, page faults, waits and
-# preemptions).
+# preemptions). Before its first frame the window draws once, unseen, to
+# have the shaders compiled: shown_ms is how long that took.
+# With COLD_SHADER_CACHE=1 every window starts with an empty shader cache,
+# as on a fresh machine.
 # Usage: scripts/time_viewer_opening.sh SCENE.sce [ROUNDS] [-- VIEWER ARGS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,14 +22,18 @@ bin=build/bin
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 run_window() {
+  if [ "${COLD_SHADER_CACHE:-0}" = 1 ]; then
+    rm -rf "$work/cache" && mkdir "$work/cache"
+    export XDG_CACHE_HOME=$work/cache
+  fi
   if [ -n "${DISPLAY:-}" ]; then
     "$bin/viewer" "$@"
   else
     xvfb-run -a -s "-screen 0 1280x720x24" "$bin/viewer" "$@"
   fi
 }
-printf '%-5s %12s %12s %12s %8s %8s %12s %9s %7s\n' round raytrace_ms first_ms exact_ms first/rt \
-  exact/rt longest_ms its_cpu frames
+printf '%-5s %12s %9s %12s %12s %8s %8s %12s %9s %7s\n' round raytrace_ms shown_ms first_ms \
+  exact_ms first/rt exact/rt longest_ms its_cpu frames
 for ((r = 1; r <= rounds; ++r)); do
   start=$(date +%s.%N)
   "$bin/raytrace" "$scene" "$work/out.png" > /dev/null
@@ -42,6 +49,7 @@ for ((r = 1; r <= rounds; ++r)); do
         for (i = 1; i <= NF; ++i) if ($i == "cpu") { cpu = $(i + 1); sub(",", "", cpu) }
       }
     }
+    /^window shown after/ { shown = $4 }
     /^render .*: first image/ && !done {
       for (i = 1; i <= NF; ++i) {
         if ($i == "first" && $(i + 1) == "image") first = $(i + 2)
@@ -50,8 +58,8 @@ for ((r = 1; r <= rounds; ++r)); do
       done = 1
     }
     END {
-      printf "%-5d %12.1f %12.1f %12.1f %8.3f %8.3f %12.1f %9.1f %7d\n", r, rt, first, exact,
-             first / rt, exact / rt, longest, cpu, n
+      printf "%-5d %12.1f %9.1f %12.1f %12.1f %8.3f %8.3f %12.1f %9.1f %7d\n", r, rt, shown, first,
+             exact, first / rt, exact / rt, longest, cpu, n
       printf "      longest: %s\n", line
     }' "$work/frames.log"
 done

@@ -33,10 +33,9 @@ class Texture {
 
 // A small texture of each kind that decides which shader the software
 // rasteriser (llvmpipe) compiles to draw an image: sides a power of two or
-// not, across and down. Drawn once when the window opens, they have those
-// shaders compiled there, rather than in the frame that first shows a
-// scene's image (where a compile, with no shader cache yet, is longer than
-// a frame may take).
+// not, across and down. Drawn once before the window is shown, they have
+// those shaders compiled there rather than in a frame, where a compile
+// (with no shader cache yet) is longer than a frame may take.
 std::vector<std::unique_ptr<Texture>> textureKinds();
 
 }  // namespace meshtrace::gl

@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "viewer/gl/gl_api.h"
 #include "viewer/gl/offscreen_context.h"
@@ -46,15 +48,8 @@ void initImGui() {
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
 
-void warmUp(int width, int height) {
-  // A software rasteriser compiles code per texture and filter state on
-  // first use: draw an image texture as the image view does, magnified
-  // (nearest) and minified (linear), so that no first render pays for it.
-  gl::Texture image;
-  image.resize(64, 64);
-  const std::vector<std::uint8_t> grey(64 * 64 * 4, 128);
-  image.uploadAll(grey.data());
-  const auto id = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(image.id()));
+double warmUp(int width, int height) {
+  const Clock::time_point start = Clock::now();
   ImGui::GetIO().DisplaySize = ImVec2(float(width), float(height));
   ImGui_ImplOpenGL3_NewFrame();  // creates the font texture
   // Glyphs sit on whole pixels and every other shape samples one white
@@ -66,20 +61,28 @@ void warmUp(int width, int height) {
                 static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID)));
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // A software rasteriser (llvmpipe) compiles code for each kind of texture
+  // on its first use (gl::textureKinds): each kind is drawn here, magnified
+  // and minified as the image view draws images, so that no frame compiles.
+  const std::vector<std::unique_ptr<gl::Texture>> kinds = gl::textureKinds();
   ImGui::NewFrame();
   // As large as the window: the first frame to fill it is slow too.
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize);
   ImGui::Begin("warm-up");
   ImGui::TextUnformatted("-");
-  ImGui::Image(id, ImVec2(256, 256));
-  ImGui::Image(id, ImVec2(16, 16), ImVec2(0, 0), ImVec2(1, 1), ImVec4(1, 1, 1, 0.5f));
+  for (const auto& kind : kinds) {
+    const auto id = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(kind->id()));
+    ImGui::Image(id, ImVec2(16, 16));
+    ImGui::Image(id, ImVec2(1, 1), ImVec2(0, 0), ImVec2(1, 1), ImVec4(1, 1, 1, 0.5f));
+  }
   ImGui::End();
   ImGui::Render();
   glViewport(0, 0, width, height);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glFinish();
+  return msBetween(start, Clock::now());
 }
 
 void shutdownImGui() {

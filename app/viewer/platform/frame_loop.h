@@ -15,9 +15,11 @@ namespace meshtrace::viewer {
 // GL functions must be loaded.
 void initImGui();
 void shutdownImGui();
-// Draws one throwaway frame: the font atlas is built and the shaders are
-// compiled (slow in a software rasteriser) before any render competes.
-void warmUp(int width, int height);
+// Draws one throwaway frame, before the window is shown and before any
+// render competes: the font atlas is built and every shader the frames
+// need is compiled (slow in a software rasteriser without its shader
+// cache). Returns how long it took, in ms.
+double warmUp(int width, int height);
 
 // Draws the frame last built into the current framebuffer (width x height),
 // waits for GL to finish and serves a screenshot request.

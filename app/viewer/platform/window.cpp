@@ -76,6 +76,9 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
   // --size is taken as given; the default size is fitted to the screen.
   const ScreenArea area = options.sizeGiven ? ScreenArea{} : workArea();
   const ScreenArea first = fitWindow(options.width, options.height, area, {});
+  // Shown once the shaders are compiled (warmUp): until then it could draw
+  // nothing and would not answer.
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
   GLFWwindow* window =
       glfwCreateWindow(first.width, first.height, "meshtrace viewer", nullptr, nullptr);
   if (!window) {
@@ -95,7 +98,11 @@ int runWindow(const ViewerOptions& options, const std::filesystem::path& executa
   {
     int width, height;
     glfwGetFramebufferSize(window, &width, &height);
-    warmUp(width, height);
+    const double warmUpMs = warmUp(width, height);
+    glfwShowWindow(window);
+    if (options.frameLog)
+      std::fprintf(stderr, "window shown after %.1f ms of drawing to compile the shaders\n",
+                   warmUpMs);
     // The render reaching its first or exact image, or background work
     // handing something over, ends the pause between frames and posts an
     // empty event, which ends the wait for input.

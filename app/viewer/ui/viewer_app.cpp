@@ -316,16 +316,6 @@ void ViewerApp::sync() {
 
 void ViewerApp::frame(Clock::time_point inputAt) {
   state_.timing.frameInputAt = inputAt;
-  // A pixel of each kind of image texture, under everything else, in the
-  // first frame: the shaders the images need are compiled before any
-  // scene's image is shown.
-  if (frames_++ == 0) {
-    textureKinds_ = gl::textureKinds();
-    for (const auto& t : textureKinds_)
-      ImGui::GetBackgroundDrawList()->AddImage(textureId(*t), ImVec2(0, 0), ImVec2(1, 1));
-  } else if (frames_ == 4) {
-    textureKinds_.clear();
-  }
   // The watched files are looked at a few times a second: an edit shows
   // soon after it is saved, and the stat calls cost the frames nothing.
   if (inputAt >= state_.reload.nextCheck) {

@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "viewer/gl/texture.h"
 #include "viewer/ui/render_display.h"
 #include "viewer/ui/state.h"
 
@@ -110,9 +109,6 @@ class ViewerApp {
   ViewerState state_;
   RenderDisplay display_;
   int framesSinceInput_ = 0;
-  int frames_ = 0;
-  // Drawn in the first frame (gl::textureKinds), freed a few frames later.
-  std::vector<std::unique_ptr<gl::Texture>> textureKinds_;
   enum class AbStage { None, RenderingB, Done };
   AbStage abStage_ = AbStage::None;
   bool renderingAtFrameStart_ = false;
