@@ -52,11 +52,14 @@ PreviewGrid::PreviewGrid(const Scene& scene, TriangleKernel kernel)
 
 bool PreviewGrid::build(std::uint32_t size, double cellsWanted) {
   // The chunks, mesh by mesh, and their boxes (one pass over the triangles).
-  std::vector<Chunk> chunks;
+  std::size_t chunkCount = 0;
+  for (const Mesh& mesh : scene_.meshes) chunkCount += (mesh.triangles().size() + size - 1) / size;
+  BuildVector<Chunk> chunks(chunkCount);
+  std::size_t next = 0;
   for (std::uint32_t m = 0; m < scene_.meshes.size(); ++m) {
     const auto n = static_cast<std::uint32_t>(scene_.meshes[m].triangles().size());
     for (std::uint32_t first = 0; first < n; first += size)
-      chunks.push_back({m, first, std::min(size, n - first), {}, {}});
+      chunks[next++] = {m, first, std::min(size, n - first), {}, {}};
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "meshtrace/accel/intersector.h"
+#include "util/build_vector.h"
 
 namespace meshtrace {
 
@@ -55,12 +56,14 @@ class PreviewGrid final : public ExternalIntersector {
   TriangleKernel kernel_;
   Aabb bounds_;
   std::uint32_t chunkSize_ = 0;
-  std::vector<Chunk> chunks_;
+  // chunks_ and refs_ are new memory that a scene's first look waits for:
+  // on huge pages (BuildVector), they are a few page faults, not hundreds.
+  BuildVector<Chunk> chunks_;
   int res_[3] = {0, 0, 0};
   Vec3 cellSize_{0.0}, inverseCell_{0.0};
   std::vector<std::uint32_t>
       cellStart_;                    // per cell, its first entry in refs_ (one more at the end)
-  std::vector<std::uint32_t> refs_;  // chunk indices, cell by cell
+  BuildVector<std::uint32_t> refs_;  // chunk indices, cell by cell
 };
 
 }  // namespace meshtrace

@@ -1,8 +1,9 @@
 #pragma once
 // A vector whose resize leaves trivially constructible elements unwritten,
 // for large buffers that are filled right after they are sized: the
-// build's, filled in parallel, and a progressive job's per-pixel buffers
-// (render/progressive_job.h). Value-initialising them first would write
+// build's, filled in parallel, a progressive job's per-pixel buffers
+// (render/progressive_job.h) and the preview grid's chunks and cells
+// (render/progressive_preview.h). Value-initialising them first would write
 // every page from one thread, each first write a page fault, before the
 // fill writes them all again: a zero fill costs a large first build about
 // a quarter of its blocks' time.
