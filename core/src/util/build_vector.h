@@ -36,6 +36,9 @@ void offerHugePages(void* p, std::size_t bytes) noexcept;
 // arrays), offered to huge pages before anything is written to it: on
 // first touch a 2 MiB page costs one page fault instead of 512, which on
 // a large mesh's arrays is more of the load than the numbers are.
+// Only the whole 2 MiB pages inside are offered, unless the program's
+// operator new is ours (large_page_new.cpp), which starts such a vector on
+// a 2 MiB boundary: our programs link it, the library leaves it to them.
 template <typename T>
 void reserveOnLargePages(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
