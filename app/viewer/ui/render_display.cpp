@@ -111,6 +111,10 @@ bool RenderDisplay::imageWaiting() const {
 void RenderDisplay::update(const FalseColorScales& deviation) {
   if (!scene_) return;
   const std::uint64_t oldJob = frame_.job;
+  // A render just started (sync) gets its texture size first, while the
+  // workers trace its first pass: the frame's copy below then often has
+  // that pass already, and shows it in this frame rather than the next.
+  textures_.sizeFor(camera_.width(), camera_.height(), wish_.overlay != Overlay::None);
   frameStatus_ = renderer_.status();
   const std::vector<int> tiles = renderer_.update(frame_);
   if (frame_.width == 0) return;

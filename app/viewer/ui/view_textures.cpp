@@ -1,6 +1,7 @@
 #include "viewer/ui/view_textures.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "meshtrace/io/image.h"
 #include "meshtrace/render/inspect_colors.h"
@@ -14,15 +15,19 @@ void putColor(std::uint8_t* out, const Color& c) {
 }
 }  // namespace
 
-void ViewTextures::fit(const ProgressiveFrame& frame, bool withOverlay) {
+void ViewTextures::sizeFor(int width, int height, bool withOverlay) {
   const auto sizeDiffers = [&](const gl::Texture& t) {
-    return !t.valid() || t.width() != frame.width || t.height() != frame.height;
+    return !t.valid() || t.width() != width || t.height() != height;
   };
-  // A texture made or resized now holds nothing yet: every tile is coloured again.
-  const bool resized = sizeDiffers(image_) || stale_.size() != frame.tileStep.size() ||
-                       (withOverlay && sizeDiffers(overlay_));
-  image_.resize(frame.width, frame.height);
-  if (withOverlay) overlay_.resize(frame.width, frame.height);
+  blank_ = blank_ || sizeDiffers(image_) || (withOverlay && sizeDiffers(overlay_));
+  image_.resize(width, height);
+  if (withOverlay) overlay_.resize(width, height);
+}
+
+void ViewTextures::fit(const ProgressiveFrame& frame, bool withOverlay) {
+  // A texture made or resized holds nothing yet: every tile is coloured again.
+  sizeFor(frame.width, frame.height, withOverlay);
+  const bool resized = std::exchange(blank_, false) || stale_.size() != frame.tileStep.size();
   const std::size_t rowOfTiles = static_cast<std::size_t>(frame.width) * frame.tileSize * 4;
   viewRgba_.resize(rowOfTiles);
   if (withOverlay) overlayRgba_.resize(rowOfTiles);

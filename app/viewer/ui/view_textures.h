@@ -17,6 +17,10 @@ namespace meshtrace::viewer {
 
 class ViewTextures {
  public:
+  // Sizes the textures for a render of width x height, before its frame
+  // has that size: a new GL texture is the costly part of a new size, and
+  // is better made while the render's first pass is traced.
+  void sizeFor(int width, int height, bool withOverlay);
   // Matches the textures to the frame's size; a new size makes every tile stale.
   void fit(const ProgressiveFrame& frame, bool withOverlay);
   void markChanged(const std::vector<int>& tiles);
@@ -39,6 +43,7 @@ class ViewTextures {
   void upload(const ProgressiveFrame& frame, int row, int firstTile, int endTile, bool withOverlay);
 
   std::vector<char> stale_;  // per tile
+  bool blank_ = false;       // a texture was made or resized since the last fit()
   // The colours of one row of tiles on their way to the textures: a row's
   // stale tiles are coloured and uploaded in one go (refresh), so nothing
   // image-sized is kept, and a new image size writes no new memory here.
