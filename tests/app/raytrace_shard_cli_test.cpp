@@ -117,6 +117,13 @@ TEST(RaytraceShard, FourReportSharesThroughGnuParallelMergeIntoOneRunsRows) {
   EXPECT_EQ(test::listFolder(dir / "merged"), test::listFolder(dir / "one"));
   test::expectMentions(test::readFileBytes(dir / "merged" / "report.md"),
                        {"## s0", "## s4", "## Stability suite"});
+  // The stability suite is the same for every share: only share 0 measures it.
+  const std::string suite = test::readFileBytes(dir / "share0" / "stability.md");
+  test::expectMentions(suite, {"Mrays/s"});
+  EXPECT_EQ(test::readFileBytes(dir / "merged" / "stability.md"), suite);
+  for (const char* other : {"share1", "share2", "share3"})
+    test::expectMentions(test::readFileBytes(dir / other / "stability.md"),
+                         {"Measured by share 0/4"});
 
   // Share 1 twice, then without share 3: refused, the output left alone.
   for (const std::vector<std::string>& given :
