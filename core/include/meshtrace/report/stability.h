@@ -27,7 +27,7 @@ MeshData makeClosedGridBox(int n);
 // triangle accepts (harmless for the closest hit, but a double count).
 struct WatertightResult {
   std::size_t rays = 0, leaks = 0, multipleHits = 0;
-  double seconds = 0.0;  // closest-hit queries only, brute force
+  double seconds = 0.0;  // the scan of every triangle for every ray
   double mraysPerSecond() const { return seconds > 0.0 ? rays / seconds * 1e-6 : 0.0; }
 };
 WatertightResult measureWatertightBox(TriangleKernel kernel, int n, const Vec3& eye);
