@@ -379,9 +379,10 @@ TEST(BvhAgreesWithBruteForce, FlatMeshFarFromTheOriginInSinglePrecision) {
   }
   const Scene scene = meshScene({makeMesh("flat", std::move(m))});
   const Vec3 eye = center + Vec3(143.4, 146.7, -139.6);
-  // A 201 x 201 grid of rays over the mesh, every other one of them under
-  // AddressSanitizer (about a quarter).
-  const int side = test::kBuiltWithAsan ? 101 : 201;
+  // A 201 x 201 grid of rays over the mesh, every fourth one of them in
+  // each direction under AddressSanitizer (about a sixteenth, as
+  // sanitizerShare takes).
+  const int side = test::kBuiltWithAsan ? 51 : 201;
   const double step = 50.0 / (side - 1);
   for (const TriangleTest test :
        {TriangleTest::Watertight, TriangleTest::Cramer, TriangleTest::MollerTrumbore}) {
@@ -726,7 +727,8 @@ TEST(BvhPrefetch, FetchingChildrenAheadChangesNoAnswer) {
   EXPECT_TRUE(saysNotFetched(plain));
 
   expectAgreement("torus knot, fetching ahead", compare(knot, 200000, 5, {}, always));
-  const PacketCheck check = comparePackets(knot, 20000, 41, always);
+  const PacketCheck check =
+      comparePackets(knot, static_cast<int>(test::sanitizerShare(20000)), 41, always);
   EXPECT_GT(check.hits, check.rays / 5);
   EXPECT_GT(check.blocked, check.rays / 10);
   EXPECT_EQ(check.differences, 0u) << check.example;
