@@ -26,9 +26,9 @@ namespace meshtrace {
 namespace {
 
 // Pixels times triangles (plus objects) that brute force renders in full;
-// a costlier scene is sampled down to about this much work. Under the
-// sanitizers, a sixteenth of it, as sanitizerShare takes of rays.
-constexpr double kBruteForceBudget = test::kBuiltWithAsan ? 3e9 / 16 : 3e9;
+// a costlier scene is sampled down to about this much work (under the
+// sanitizers, the share sanitizerShare takes of rays).
+constexpr double kBruteForceBudget = 3e9 / double(test::kSanitizerDivisor);
 
 // Every stride-th pixel in storage order. A stride that shares no factor
 // with the width moves the column from row to row, so the sample covers

@@ -379,9 +379,9 @@ TEST(BvhAgreesWithBruteForce, FlatMeshFarFromTheOriginInSinglePrecision) {
   }
   const Scene scene = meshScene({makeMesh("flat", std::move(m))});
   const Vec3 eye = center + Vec3(143.4, 146.7, -139.6);
-  // A 201 x 201 grid of rays over the mesh, every fourth one of them in
-  // each direction under AddressSanitizer (about a sixteenth, as
-  // sanitizerShare takes).
+  // A 201 x 201 grid of rays over the mesh; under AddressSanitizer every
+  // fourth one in each direction, the share sanitizerShare takes.
+  static_assert(test::kSanitizerDivisor == 1 || test::kSanitizerDivisor == 4 * 4);
   const int side = test::kBuiltWithAsan ? 51 : 201;
   const double step = 50.0 / (side - 1);
   for (const TriangleTest test :
