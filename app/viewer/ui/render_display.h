@@ -99,6 +99,14 @@ class RenderDisplay {
   const std::shared_ptr<const RenderScene>& renderScene() const { return scene_; }
   // Every tile the render has published is in the textures.
   bool texturesCurrent() const { return textures_.current(); }
+  // The textures hold the whole of the current render: it had finished
+  // when the frame was last copied (the live status may say finished
+  // before the copy holds its last tiles), no render started since, and
+  // every tile is uploaded.
+  bool showsFinishedRender() const {
+    return frameStatus_.finished && frameStatus_.job == renderer_.status().job &&
+           frame_.job == frameStatus_.job && textures_.current();
+  }
   const Camera& camera() const { return camera_; }
   const FalseColorScales& scales() const { return scales_; }
   const RenderWish& wish() const { return wish_; }

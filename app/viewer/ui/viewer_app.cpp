@@ -155,11 +155,7 @@ void ViewerApp::applyShading(const char* option,
 
 void ViewerApp::advanceAbSetup() {
   if (abStage_ != AbStage::RenderingB || !state_.session.loaded()) return;
-  const SceneRequests& scenes = state_.scenes;
-  const ProgressiveStatus s = display_.status();
-  if (scenes.pipeline->busy() || !scenes.render || display_.renderScene() != scenes.render ||
-      !s.finished || display_.frame().job != s.job || !display_.texturesCurrent())
-    return;
+  if (!showsLatestRequest()) return;
   abStage_ = AbStage::Done;
   if (!keepAsB(state_, display_)) {
     refuse("--b-*: the colour image is not rendered in the " + std::string(label(state_.view)) +
@@ -438,9 +434,15 @@ bool ViewerApp::idle() const {
       state_.reference.task->busy() || state_.ab.task->busy() || state_.layersSave->busy())
     return false;
   if (!state_.session.loaded() || !scenes.failure.empty()) return true;
-  if (!scenes.render || display_.renderScene() != scenes.render) return false;
-  const ProgressiveStatus s = display_.status();
-  return s.finished && display_.frame().job == s.job && display_.texturesCurrent();
+  return showsLatestRequest();
+}
+
+bool ViewerApp::showsLatestRequest() const {
+  // A render scene made for an older request is not it, even when the
+  // newer one's answer waits to be received.
+  const SceneRequests& scenes = state_.scenes;
+  return scenes.render && scenes.render->request == scenes.lastId &&
+         display_.renderScene() == scenes.render && display_.showsFinishedRender();
 }
 
 std::vector<std::string> ViewerApp::failures() const {

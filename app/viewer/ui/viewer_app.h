@@ -96,6 +96,9 @@ class ViewerApp {
   // A/B from the command line: once B's render is complete, keeps it and
   // turns to A's settings.
   void advanceAbSetup();
+  // The textures show the finished render of the render scene made for the
+  // latest request (the settings as they are now).
+  bool showsLatestRequest() const;
   // Takes in what the background work finished, and starts what is due.
   void receive();
   void requestRenderScene();
