@@ -38,9 +38,9 @@ bool sameTrace(const TraceOptions& a, const TraceOptions& b);
 // builds in about the time the preview would take.
 inline constexpr std::size_t kPreviewTriangles = 200'000;
 
-// Applies the request (copying the base only if something differs) and
-// builds the intersector; says what it does through `phase`. Returns null
-// if `cancelled` turns true between its steps.
+// Applies the request (a mesh switched to another mode shares its arrays
+// with the base, mesh.h) and builds the intersector; says what it does
+// through `phase`. Returns null if `cancelled` turns true between its steps.
 std::shared_ptr<RenderScene> makeRenderScene(const RenderRequest& request,
                                              const std::function<void(std::string)>& phase,
                                              const std::function<bool()>& cancelled);

@@ -182,7 +182,7 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
 }
 
 FaceOfTriangle Mesh::faceOf(std::uint32_t triangle) const {
-  const std::vector<PolygonFace>& polygons = data_.polygons;
+  const std::vector<PolygonFace>& polygons = data_->polygons;
   // The last polygon starting at or before the triangle, if any.
   const auto after =
       std::upper_bound(polygons.begin(), polygons.end(), triangle,
@@ -194,10 +194,14 @@ FaceOfTriangle Mesh::faceOf(std::uint32_t triangle) const {
 }
 
 Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Material& material)
-    : file_(std::move(file)), data_(std::move(data)), shading_(Shading::Flat), material_(material) {
+    : file_(std::move(file)),
+      data_(std::make_shared<const MeshData>(std::move(data))),
+      shading_(Shading::Flat),
+      material_(material) {
   // Both passes in parallel (most of the rest is resize's zero fill of the
   // normals).
-  const std::vector<Vec3>& v = data_.vertices;
+  const std::vector<Vec3>& v = data_->vertices;
+  const std::vector<TriangleIndices>& triangles = data_->triangles;
   bounds_ = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, v.size(), kGrain), Aabb{},
       [&](const tbb::blocked_range<std::size_t>& r, Aabb box) {
@@ -208,31 +212,39 @@ Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Mat
         a.extend(b);
         return a;
       });
-  reserveOnLargePages(triangleNormals_, data_.triangles.size());
-  triangleNormals_.resize(data_.triangles.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data_.triangles.size(), kGrain),
+  std::vector<Vec3> normals;
+  reserveOnLargePages(normals, triangles.size());
+  normals.resize(triangles.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        const TriangleIndices& t = data_.triangles[i];
-                        triangleNormals_[i] = triangleNormal(v[t[0]], v[t[1]], v[t[2]]);
+                        const TriangleIndices& t = triangles[i];
+                        normals[i] = triangleNormal(v[t[0]], v[t[1]], v[t[2]]);
                       }
                     });
+  triangleNormals_ = std::make_shared<const std::vector<Vec3>>(std::move(normals));
   setShading(shading);
+}
+
+const std::vector<Vec3>& Mesh::vertexNormals() const {
+  static const std::vector<Vec3> kNone;
+  return vertexNormals_ ? *vertexNormals_ : kNone;
 }
 
 void Mesh::setShading(Shading shading) {
   shading_ = shading;
-  if (shading == Shading::Phong && vertexNormals_.empty() && !data_.vertices.empty()) {
-    vertexNormals_ = angleWeightedVertexNormals(data_, triangleNormals_);
+  if (shading == Shading::Phong && !vertexNormals_ && !data_->vertices.empty()) {
+    vertexNormals_ = std::make_shared<const std::vector<Vec3>>(
+        angleWeightedVertexNormals(*data_, *triangleNormals_));
   }
 }
 
 Vec3 Mesh::shadingNormal(std::uint32_t tri, double beta, double gamma) const {
-  const Vec3& flat = triangleNormals_[tri];
+  const Vec3& flat = (*triangleNormals_)[tri];
   if (shading_ == Shading::Flat) return flat;
-  const TriangleIndices& t = data_.triangles[tri];
-  const Vec3 n = (1.0 - beta - gamma) * vertexNormals_[t[0]] + beta * vertexNormals_[t[1]] +
-                 gamma * vertexNormals_[t[2]];
+  const TriangleIndices& t = data_->triangles[tri];
+  const std::vector<Vec3>& vn = *vertexNormals_;
+  const Vec3 n = (1.0 - beta - gamma) * vn[t[0]] + beta * vn[t[1]] + gamma * vn[t[2]];
   const double len = glm::length(n);
   // Opposing vertex normals (a knife-edge fold) can cancel; the face normal is
   // then the only meaningful direction.

@@ -291,6 +291,20 @@ TEST(Mesh, SwitchingToPhongComputesTheVertexNormals) {
   EXPECT_EQ(mesh.vertexNormals().size(), 8u);
 }
 
+TEST(Mesh, ACopySwitchedToPhongSharesTheArraysAndLeavesTheOriginalFlat) {
+  const Mesh flat("cube.off", unitCube(), Shading::Flat, Material{});
+  Mesh copy = flat;
+  copy.setShading(Shading::Phong);
+  EXPECT_EQ(copy.vertices().data(), flat.vertices().data());
+  EXPECT_EQ(copy.triangles().data(), flat.triangles().data());
+  EXPECT_EQ(copy.triangleNormals().data(), flat.triangleNormals().data());
+  EXPECT_EQ(copy.vertexNormals().size(), 8u);
+  EXPECT_EQ(flat.shading(), Shading::Flat);
+  EXPECT_TRUE(flat.vertexNormals().empty());
+  expectNear(flat.shadingNormal(0, 0.0, 0.0), Vec3(0, 0, -1));
+  expectNear(copy.shadingNormal(0, 0.0, 0.0), glm::normalize(Vec3(-1, -1, -1)));
+}
+
 TEST(Mesh, BoundsAreTheBoxOfTheVertices) {
   MeshData data;
   data.vertices = {Vec3(1, -2, 3), Vec3(-4, 5, 0.5), Vec3(0, 0, -6)};

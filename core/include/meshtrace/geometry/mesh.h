@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -63,13 +64,15 @@ class Mesh {
   const Material& material() const { return material_; }
   Shading shading() const { return shading_; }
   const Aabb& bounds() const { return bounds_; }
-  const std::vector<Vec3>& vertices() const { return data_.vertices; }
-  const std::vector<TriangleIndices>& triangles() const { return data_.triangles; }
-  const std::vector<Vec3>& triangleNormals() const { return triangleNormals_; }
-  // Empty unless the mesh is PHONG shaded: a FLAT mesh never needs them.
-  const std::vector<Vec3>& vertexNormals() const { return vertexNormals_; }
+  const std::vector<Vec3>& vertices() const { return data_->vertices; }
+  const std::vector<TriangleIndices>& triangles() const { return data_->triangles; }
+  const std::vector<Vec3>& triangleNormals() const { return *triangleNormals_; }
+  // Empty until the mesh is PHONG shaded: a FLAT mesh never needs them.
+  const std::vector<Vec3>& vertexNormals() const;
 
   // Switching to PHONG computes the vertex normals if they are missing.
+  // The copy of a mesh shares its arrays, which never change, so a copy
+  // switched to another mode costs only the normals it lacks.
   void setShading(Shading shading);
 
   FaceOfTriangle faceOf(std::uint32_t triangle) const;
@@ -79,12 +82,12 @@ class Mesh {
 
  private:
   std::filesystem::path file_;
-  MeshData data_;
+  std::shared_ptr<const MeshData> data_;
   Shading shading_;
   Material material_;
   Aabb bounds_;
-  std::vector<Vec3> triangleNormals_;
-  std::vector<Vec3> vertexNormals_;
+  std::shared_ptr<const std::vector<Vec3>> triangleNormals_;
+  std::shared_ptr<const std::vector<Vec3>> vertexNormals_;  // null until computed
 };
 
 // Angle-weighted vertex normals, summed in triangle order (the same bits on
