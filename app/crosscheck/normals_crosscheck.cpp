@@ -87,8 +87,7 @@ NormalsReport crossCheckNormals(const Mesh& mesh, std::size_t worstCount) {
   const MeshData data{mesh.vertices(), mesh.triangles()};
   if (!mesh.vertexNormals().empty())
     return crossCheckNormals(data, mesh.vertexNormals(), worstCount);
-  return crossCheckNormals(data, angleWeightedVertexNormals(data, mesh.triangleNormals()),
-                           worstCount);
+  return crossCheckNormals(data, angleWeightedVertexNormals(data), worstCount);
 }
 
 }  // namespace meshtrace::crosscheck

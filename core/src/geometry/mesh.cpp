@@ -28,6 +28,25 @@ namespace {
 // Elements a task takes in the passes over a mesh's triangles or vertices.
 constexpr std::size_t kGrain = std::size_t{1} << 14;
 
+Vec3 normalOf(const MeshData& mesh, std::size_t triangle) {
+  const TriangleIndices& t = mesh.triangles[triangle];
+  return triangleNormal(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+}
+
+// Whether each triangle has a normal (area, in double precision).
+std::vector<char> trianglesWithArea(const MeshData& mesh) {
+  std::vector<char> hasArea(mesh.triangles.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hasArea.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        const TriangleIndices& t = mesh.triangles[i];
+                        hasArea[i] = hasNormal(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                               mesh.vertices[t[2]]);
+                      }
+                    });
+  return hasArea;
+}
+
 // Whether each triangle contributes to the vertex normals: not degenerate
 // (no direction to give), and the first in file order among the triangles
 // with the same three vertices in any order (a triangle listed twice counts
@@ -36,8 +55,7 @@ constexpr std::size_t kGrain = std::size_t{1} << 14;
 // it (a stable counting sort) and each group is sorted by the other two:
 // linear in the mesh, where a hash set of the triangles had made an
 // allocation per triangle.
-std::vector<char> contributingTriangles(const MeshData& mesh,
-                                        const std::vector<Vec3>& triangleNormals) {
+std::vector<char> contributingTriangles(const MeshData& mesh, const std::vector<char>& hasArea) {
   const std::size_t n = mesh.triangles.size();
   std::vector<char> contributes(n, 0);
   const auto sorted = [&](std::size_t i) {
@@ -49,7 +67,7 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
   };
   std::vector<std::uint32_t> groupEnd(mesh.vertices.size() + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
-    if (triangleNormals[i] != Vec3(0.0)) ++groupEnd[sorted(i)[0] + 1];
+    if (hasArea[i]) ++groupEnd[sorted(i)[0] + 1];
   for (std::size_t v = 1; v < groupEnd.size(); ++v) groupEnd[v] += groupEnd[v - 1];
   struct Other {
     std::uint32_t middle, largest, triangle;
@@ -62,7 +80,7 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
   grouped.resize(groupEnd.back());
   std::vector<std::uint32_t> fill(groupEnd.begin(), groupEnd.end() - 1);
   for (std::size_t i = 0; i < n; ++i) {
-    if (triangleNormals[i] == Vec3(0.0)) continue;
+    if (!hasArea[i]) continue;
     const TriangleIndices t = sorted(i);
     grouped[fill[t[0]]++] = {t[1], t[2], static_cast<std::uint32_t>(i)};
   }
@@ -84,16 +102,16 @@ std::vector<char> contributingTriangles(const MeshData& mesh,
 
 // Adds each triangle's angle-weighted normal to the sums of its corners
 // that `into` accepts, in triangle order, for the triangles `counts`
-// accepts. The corner angles (two atan2 a triangle, most of the work) are
-// taken in parallel, a chunk of triangles at a time, while the chunks
-// before are summed in order: the sums, and so the normals, do not depend
-// on the thread count.
+// accepts. The corner angles (two atan2 a triangle, most of the work) and
+// the triangles' normals are taken in parallel, a chunk of triangles at a
+// time, while the chunks before are summed in order: the sums, and so the
+// normals, do not depend on the thread count.
 template <typename Counts, typename Into>
-void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& triangleNormals,
-                             const Counts& counts, const Into& into, std::vector<Vec3>& sums) {
+void sumAngleWeightedNormals(const MeshData& mesh, const Counts& counts, const Into& into,
+                             std::vector<Vec3>& sums) {
   struct Chunk {
     std::size_t begin = 0, end = 0;
-    std::vector<Vec3> angles;
+    std::vector<Vec3> angles, normals;
   };
   constexpr std::size_t kChunk = std::size_t{1} << 14;
   const std::size_t triangles = mesh.triangles.size();
@@ -116,11 +134,13 @@ void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& tria
               tbb::filter_mode::parallel,
               [&](std::shared_ptr<Chunk> c) {
                 c->angles.resize(c->end - c->begin);
+                c->normals.resize(c->end - c->begin);
                 for (std::size_t i = c->begin; i < c->end; ++i) {
                   if (!counts(i)) continue;
                   const TriangleIndices& t = mesh.triangles[i];
                   c->angles[i - c->begin] =
                       cornerAngles(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+                  c->normals[i - c->begin] = normalOf(mesh, i);
                 }
                 return c;
               }) &
@@ -130,16 +150,16 @@ void sumAngleWeightedNormals(const MeshData& mesh, const std::vector<Vec3>& tria
                   if (!counts(i)) continue;
                   const TriangleIndices& t = mesh.triangles[i];
                   const Vec3& w = c->angles[i - c->begin];
+                  const Vec3& normal = c->normals[i - c->begin];
                   for (int k = 0; k < 3; ++k)
-                    if (into(t[k])) sums[t[k]] += w[k] * triangleNormals[i];
+                    if (into(t[k])) sums[t[k]] += w[k] * normal;
                 }
               }));
 }
 
 }  // namespace
 
-std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
-                                             const std::vector<Vec3>& triangleNormals) {
+std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh) {
   std::vector<Vec3> normals;
   reserveOnLargePages(normals, mesh.vertices.size());
   normals.assign(mesh.vertices.size(), Vec3(0.0));
@@ -150,11 +170,11 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
   // that count, in the same order, so each sum is the one it would have
   // been had only those been added.
   std::vector<char> contributes;
-  const auto hasArea = [&](std::size_t i) { return triangleNormals[i] != Vec3(0.0); };
+  const std::vector<char> withArea = trianglesWithArea(mesh);
+  const auto hasArea = [&](std::size_t i) { return withArea[i] != 0; };
   const auto everyCorner = [](std::uint32_t) { return true; };
-  tbb::parallel_invoke(
-      [&] { contributes = contributingTriangles(mesh, triangleNormals); },
-      [&] { sumAngleWeightedNormals(mesh, triangleNormals, hasArea, everyCorner, normals); });
+  tbb::parallel_invoke([&] { contributes = contributingTriangles(mesh, withArea); },
+                       [&] { sumAngleWeightedNormals(mesh, hasArea, everyCorner, normals); });
   std::vector<char> redo;
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     if (contributes[i] || !hasArea(i)) continue;
@@ -169,7 +189,7 @@ std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
       const TriangleIndices& t = mesh.triangles[i];
       return contributes[i] && (remade(t[0]) || remade(t[1]) || remade(t[2]));
     };
-    sumAngleWeightedNormals(mesh, triangleNormals, countsThere, remade, normals);
+    sumAngleWeightedNormals(mesh, countsThere, remade, normals);
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
@@ -198,10 +218,7 @@ Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Mat
       data_(std::make_shared<const MeshData>(std::move(data))),
       shading_(Shading::Flat),
       material_(material) {
-  // Both passes in parallel (most of the rest is resize's zero fill of the
-  // normals).
   const std::vector<Vec3>& v = data_->vertices;
-  const std::vector<TriangleIndices>& triangles = data_->triangles;
   bounds_ = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, v.size(), kGrain), Aabb{},
       [&](const tbb::blocked_range<std::size_t>& r, Aabb box) {
@@ -212,19 +229,10 @@ Mesh::Mesh(std::filesystem::path file, MeshData data, Shading shading, const Mat
         a.extend(b);
         return a;
       });
-  std::vector<Vec3> normals;
-  reserveOnLargePages(normals, triangles.size());
-  normals.resize(triangles.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kGrain),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        const TriangleIndices& t = triangles[i];
-                        normals[i] = triangleNormal(v[t[0]], v[t[1]], v[t[2]]);
-                      }
-                    });
-  triangleNormals_ = std::make_shared<const std::vector<Vec3>>(std::move(normals));
   setShading(shading);
 }
+
+Vec3 Mesh::flatNormal(std::uint32_t tri) const { return normalOf(*data_, tri); }
 
 const std::vector<Vec3>& Mesh::vertexNormals() const {
   static const std::vector<Vec3> kNone;
@@ -234,13 +242,12 @@ const std::vector<Vec3>& Mesh::vertexNormals() const {
 void Mesh::setShading(Shading shading) {
   shading_ = shading;
   if (shading == Shading::Phong && !vertexNormals_ && !data_->vertices.empty()) {
-    vertexNormals_ = std::make_shared<const std::vector<Vec3>>(
-        angleWeightedVertexNormals(*data_, *triangleNormals_));
+    vertexNormals_ = std::make_shared<const std::vector<Vec3>>(angleWeightedVertexNormals(*data_));
   }
 }
 
 Vec3 Mesh::shadingNormal(std::uint32_t tri, double beta, double gamma) const {
-  const Vec3& flat = (*triangleNormals_)[tri];
+  const Vec3 flat = flatNormal(tri);
   if (shading_ == Shading::Flat) return flat;
   const TriangleIndices& t = data_->triangles[tri];
   const std::vector<Vec3>& vn = *vertexNormals_;

@@ -245,8 +245,14 @@ bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& r
 
 Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = glm::cross(b - a, c - a);
-  const double len = glm::length(n);
+  const double len = glm::length(n);  // sqrt(dot(n, n))
   return len > 0.0 && std::isfinite(len) ? n / len : Vec3(0.0);
+}
+
+bool hasNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = glm::cross(b - a, c - a);
+  const double squared = glm::dot(n, n);
+  return squared > 0.0 && std::isfinite(squared);
 }
 
 namespace {

@@ -317,13 +317,12 @@ class SceneParser {
     }
   }
 
-  // What a Mesh computes from `data`: a normal per triangle and, for PHONG,
-  // one per vertex, with the arrays that sum them (mesh.cpp).
+  // What a Mesh computes from `data`: for PHONG, a normal per vertex, with
+  // the arrays that sum them (mesh.cpp); a FLAT mesh nothing.
   static std::uint64_t normalsBytes(const MeshData& data, Shading shading) {
+    if (shading != Shading::Phong) return 0;
     const std::uint64_t triangles = data.triangles.size(), vertices = data.vertices.size();
-    std::uint64_t bytes = triangles * sizeof(Vec3);
-    if (shading == Shading::Phong) bytes += vertices * (sizeof(Vec3) + 8) + triangles * 13;
-    return bytes;
+    return vertices * (sizeof(Vec3) + 8) + triangles * 14;
   }
 
   const std::filesystem::path& file_;

@@ -28,7 +28,7 @@ SurfaceRecord describeSurface(const Scene& scene, const Hit& hit, const SurfaceP
     s.alpha = hit.alpha();
     s.beta = hit.beta;
     s.gamma = hit.gamma;
-    s.geometricNormal = mesh.triangleNormals()[hit.ref.triangle];
+    s.geometricNormal = mesh.flatNormal(hit.ref.triangle);
     s.phong = mesh.shading() == Shading::Phong;
     if (!mesh.vertexNormals().empty()) {
       s.hasVertexNormals = true;

@@ -69,7 +69,7 @@ SurfacePoint surfaceOf(const Scene& scene, const Ray& ray, const Hit& hit, Preci
   const TriangleIndices& tri = m.triangles()[ref.triangle];
   const auto& v = m.vertices();
   SurfacePoint sp{Vec3(0.0),     m.shadingNormal(ref.triangle, hit.beta, hit.gamma),
-                  &m.material(), m.triangleNormals()[ref.triangle],
+                  &m.material(), m.flatNormal(ref.triangle),
                   Vec3(0.0),     precision};
   if (precision == Precision::Double)
     barycentricPoint<double>(v[tri[0]], v[tri[1]], v[tri[2]], hit.beta, hit.gamma, sp);

@@ -66,7 +66,11 @@ class Mesh {
   const Aabb& bounds() const { return bounds_; }
   const std::vector<Vec3>& vertices() const { return data_->vertices; }
   const std::vector<TriangleIndices>& triangles() const { return data_->triangles; }
-  const std::vector<Vec3>& triangleNormals() const { return *triangleNormals_; }
+  // Triangle `tri`'s unit normal (triangleNormal of its corners), taken
+  // where a ray meets it rather than kept for every triangle: a render
+  // needs it only at hit points, and an array of them would take 24 bytes
+  // a triangle, as much as a closed mesh's vertices and indices together.
+  Vec3 flatNormal(std::uint32_t tri) const;
   // Empty until the mesh is PHONG shaded: a FLAT mesh never needs them.
   const std::vector<Vec3>& vertexNormals() const;
 
@@ -86,14 +90,12 @@ class Mesh {
   Shading shading_;
   Material material_;
   Aabb bounds_;
-  std::shared_ptr<const std::vector<Vec3>> triangleNormals_;
   std::shared_ptr<const std::vector<Vec3>> vertexNormals_;  // null until computed
 };
 
 // Angle-weighted vertex normals, summed in triangle order (the same bits on
 // any number of threads). A triangle listed more than once counts once; a
 // vertex with no non-degenerate incident triangle gets the zero vector.
-std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh,
-                                             const std::vector<Vec3>& triangleNormals);
+std::vector<Vec3> angleWeightedVertexNormals(const MeshData& mesh);
 
 }  // namespace meshtrace

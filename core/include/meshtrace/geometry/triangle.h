@@ -89,6 +89,10 @@ bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& r
 // normalize((B - A) x (C - A)), or the zero vector for a degenerate triangle
 // (so a zero-area triangle contributes nothing to vertex normals, and never a NaN).
 Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c);
+// Whether triangleNormal(a, b, c) is not the zero vector, without its
+// square root and division: the same cross product, its squared length
+// positive and finite exactly when the length is.
+bool hasNormal(const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Interior angles at A, B and C, in radians; zero for a degenerate corner.
 Vec3 cornerAngles(const Vec3& a, const Vec3& b, const Vec3& c);
