@@ -11,6 +11,7 @@
 
 #include "accel/primitive_query.h"
 #include "accel/traverse.h"
+#include "meshtrace/io/input_error.h"
 #include "util/lanes.h"
 #include "util/prefetch.h"
 
@@ -33,6 +34,34 @@ Aabb cylinderBox(const Cylinder& c) {
               std::abs(c.radius) * std::sqrt(std::max(0.0, 1.0 - a * a));
   }
   return {c.center - half, c.center + half};
+}
+
+// The BVH's boxes and its rays' origins are single precision. Up to this
+// magnitude a box corner, an origin and their difference stay finite in
+// float (2 x 2^126 < FLT_MAX), so a slab test errs only toward a visit;
+// beyond it they round to infinity, and rays miss what brute force hits.
+constexpr double kMaxBvhCoordinate = 0x1p126;
+
+// Throws InputError naming the first object (or the camera) that reaches
+// beyond kMaxBvhCoordinate. Ray origins lie on the objects or at the eye.
+void refuseBeyondSinglePrecision(const Scene& scene) {
+  const auto check = [&](const std::string& what, double reach) {
+    if (reach <= kMaxBvhCoordinate) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s reaches %.3g: --accel bvh holds coordinates in single precision, up to "
+                  "%.3g; use --accel aabb or none, or scale the scene down",
+                  what.c_str(), reach, kMaxBvhCoordinate);
+    throw InputError::inFile(scene.file, text);
+  };
+  check("the camera's eye", maxAbsComponent(scene.camera.spec().eye));
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+    check("sphere " + std::to_string(i + 1), sphereBox(scene.spheres[i]).largestCoordinate());
+  for (std::size_t i = 0; i < scene.cylinders.size(); ++i)
+    check("cylinder " + std::to_string(i + 1), cylinderBox(scene.cylinders[i]).largestCoordinate());
+  for (const Mesh& mesh : scene.meshes)
+    if (!mesh.triangles().empty())
+      check("mesh " + mesh.file().filename().string(), mesh.bounds().largestCoordinate());
 }
 
 // Returns how many triangles were left out as spare copies.
@@ -279,6 +308,7 @@ class PacketBlockRays {
 }  // namespace
 
 SceneBvh::SceneBvh(const Scene& scene, const SceneBvhOptions& options) : scene_(scene) {
+  refuseBeyondSinglePrecision(scene);
   const auto start = std::chrono::steady_clock::now();
   inMeshBvh_.resize(scene.meshes.size());
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {

@@ -21,6 +21,7 @@
 #include "meshtrace/accel/intersector.h"
 #include "meshtrace/geometry/mesh_generators.h"
 #include "meshtrace/geometry/polygon.h"
+#include "meshtrace/io/input_error.h"
 #include "support/meshes.h"
 
 namespace meshtrace {
@@ -210,6 +211,54 @@ TEST(SceneBvh, ANonConvexFaceWithARowOfManyCornersCostsFewTestsARay) {
     EXPECT_LE(testsAQuery, 3.0 * std::log2(static_cast<double>(kRow))) << "bulge " << bulge;
     std::printf("bulge %g: %.2f triangle tests a query\n", bulge, testsAQuery);
   }
+}
+
+// The BVH's boxes and ray origins are single precision. Up to its limit
+// (2^126) it answers as brute force at any scale, deep in float's
+// denormals included; a scene beyond it is refused by name, where its rays
+// would round to infinity and miss what brute force hits.
+TEST(SceneBvh, AnswersAsBruteForceAtAnyScaleUpToSinglePrecisionAndRefusesBeyond) {
+  TraceOptions bvh, none;
+  none.accel = AccelMethod::None;
+  const auto sceneAt = [](double scale) {
+    Scene scene;
+    scene.meshes.push_back(makeMesh("grid.off", makeGrid(Vec3(0.0), 2.0 * scale, 8)));
+    scene.meshes.push_back(
+        makeMesh("ball.off", makeIcosphere(Vec3(0.0, 0.5 * scale, 0.0), 0.4 * scale, 2)));
+    return scene;
+  };
+  for (const double scale : {0x1p-300, 0x1p-140, 1.0, 0x1p100, 0x1p125}) {
+    const Scene scene = sceneAt(scale);
+    const SceneIntersector withBvh(scene, bvh), bruteForce(scene, none);
+    Counters counters;
+    int hits = 0;
+    for (int y = 0; y < 30; ++y)
+      for (int x = 0; x < 30; ++x) {
+        const Ray ray{Vec3((-1.2 + 0.08 * x) * scale, 1.9 * scale, (-1.2 + 0.08 * y) * scale),
+                      glm::normalize(Vec3(0.1, -1.0, 0.05))};
+        Hit a, b;
+        const bool foundA = withBvh.closestHit(ray, 0.0, a, counters);
+        const bool foundB = bruteForce.closestHit(ray, 0.0, b, counters);
+        ASSERT_EQ(foundA, foundB) << "scale " << scale << ", ray " << x << ", " << y;
+        if (!foundA) continue;
+        ++hits;
+        EXPECT_EQ(a.ref.object, b.ref.object);
+        EXPECT_EQ(a.ref.triangle, b.ref.triangle);
+        EXPECT_EQ(a.t, b.t);
+        EXPECT_EQ(withBvh.occluded(ray, 0.0, kInfinity, counters),
+                  bruteForce.occluded(ray, 0.0, kInfinity, counters));
+      }
+    EXPECT_GT(hits, 400) << "scale " << scale;
+  }
+  const Scene far = sceneAt(0x1p127);
+  try {
+    const SceneIntersector refused(far, bvh);
+    ADD_FAILURE() << "a scene beyond single precision was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh grid.off reaches"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("single precision"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(SceneIntersector(far, none));
 }
 
 }  // namespace
