@@ -3,6 +3,7 @@
 // triangle's other geometry: its normal and corner angles.
 #include "meshtrace/geometry/triangle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <numbers>
@@ -245,14 +246,20 @@ bool intersectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& r
 
 Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = glm::cross(b - a, c - a);
-  const double len = glm::length(n);  // sqrt(dot(n, n))
-  return len > 0.0 && std::isfinite(len) ? n / len : Vec3(0.0);
+  const double len = glm::length(n);
+  // From 2^-511 on, the squared length is a normal double and keeps its
+  // digits; under it, or where it overflowed (edges under about 1e-77 or
+  // over 1e77), n over its largest component has a length of 1 to sqrt(3)
+  // to take instead. Triangles of ordinary size keep the bits of n / |n|.
+  if (len >= 0x1p-511 && std::isfinite(len)) return n / len;
+  if (!isFinite(n) || n == Vec3(0.0)) return Vec3(0.0);
+  const Vec3 m = n / maxAbsComponent(n);
+  return m / glm::length(m);
 }
 
 bool hasNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = glm::cross(b - a, c - a);
-  const double squared = glm::dot(n, n);
-  return squared > 0.0 && std::isfinite(squared);
+  return isFinite(n) && n != Vec3(0.0);
 }
 
 namespace {
@@ -279,7 +286,21 @@ Vec3 cornerAngles(const Vec3& a, const Vec3& b, const Vec3& c) {
   // The two narrower corners (each under pi/2) take their atan2 with it;
   // the widest is what is left of pi, at least pi/3, so that subtraction
   // loses nothing that matters.
-  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  Vec3 ab = b - a, bc = c - b, ca = a - c;
+  // The area and the dot products square the edges, and an area squares
+  // them twice: for a triangle whose edges reach under 2^-200 or over
+  // 2^200 across, the edges are first scaled by a power of two (exactly),
+  // which changes no angle. Triangles of ordinary size are taken as they are.
+  const double extent = std::max({maxAbsComponent(ab), maxAbsComponent(bc), maxAbsComponent(ca)});
+  if (extent > 0.0 && std::isfinite(extent) && (extent < 0x1p-200 || extent > 0x1p200)) {
+    int exponent = 0;
+    std::frexp(extent, &exponent);
+    const auto scaled = [&](const Vec3& v) {
+      return Vec3(std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent),
+                  std::ldexp(v.z, -exponent));
+    };
+    ab = scaled(ab), bc = scaled(bc), ca = scaled(ca);
+  }
   const double facingA = glm::dot(bc, bc), facingB = glm::dot(ca, ca), facingC = glm::dot(ab, ab);
   std::optional<Vec3> w;
   if (facingA >= facingB && facingA >= facingC) {
@@ -293,7 +314,9 @@ Vec3 cornerAngles(const Vec3& a, const Vec3& b, const Vec3& c) {
   const auto angle = [](const Vec3& u, const Vec3& v) {
     return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
   };
-  return {angle(ab, c - a), angle(bc, a - b), angle(ca, b - c)};
+  // 0 - v, not -v: an edge of no length gives +0 components, as c - a would.
+  const auto reversed = [](const Vec3& v) { return Vec3(0.0) - v; };
+  return {angle(ab, reversed(ca)), angle(bc, reversed(ab)), angle(ca, reversed(bc))};
 }
 
 }  // namespace meshtrace

@@ -68,9 +68,9 @@ TEST(TriangleNormal, IsZeroNotNanForDegenerateTriangles) {
   EXPECT_EQ(triangleNormal(Vec3(4), Vec3(4), Vec3(4)), Vec3(0.0)) << "a point";
 }
 
-// hasNormal stands for triangleNormal(...) != 0 where the squared length
-// underflows (tiny triangles: a cross product of about 1e-320 has a zero
-// square) or overflows (huge ones), as well as for ordinary triangles.
+// hasNormal stands for triangleNormal(...) != 0 at every scale: where the
+// cross product's squared length underflows or overflows too, and where
+// the cross product itself does.
 TEST(TriangleNormal, HasNormalExactlyWhenTheNormalIsNotZeroAtEveryScale) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -87,10 +87,23 @@ TEST(TriangleNormal, HasNormalExactlyWhenTheNormalIsNotZeroAtEveryScale) {
     }
   }
   EXPECT_EQ(hasNormal(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)), false) << "collinear";
-  // Both answers occur: the squared length of a cross product of size
-  // scale^2 is finite and positive only for scales of about 1e-81 to 1e77.
-  EXPECT_GT(withNormal, 1000);
-  EXPECT_GT(without, 3000);
+  // Both answers occur: a cross product of size scale^2 is finite and not
+  // zero for scales of about 1e-161 to 1e153.
+  EXPECT_GT(withNormal, 2400);
+  EXPECT_GT(without, 2400);
+}
+
+// A triangle's normal and corner angles do not depend on its size, from
+// edges of 1e-150 to 1e150, where the squares of its edges and of its
+// area under- and overflow.
+TEST(TriangleNormal, AndCornerAnglesAreTheSameAtEveryScale) {
+  const Vec3 a(0.3, -0.2, 0.1), b(1.1, 0.4, -0.3), c(-0.2, 0.9, 0.6);
+  const Vec3 normal = triangleNormal(a, b, c), angles = cornerAngles(a, b, c);
+  for (int exponent = -150; exponent <= 150; exponent += 10) {
+    const double s = std::pow(10.0, exponent);
+    expectNear(triangleNormal(a * s, b * s, c * s), normal, 1e-14);
+    expectNear(cornerAngles(a * s, b * s, c * s), angles, 1e-14);
+  }
 }
 
 TEST(CornerAngles, SumToPiAndMatchARightTriangle) {
