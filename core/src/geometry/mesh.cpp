@@ -246,8 +246,7 @@ void Mesh::setShading(Shading shading) {
   }
 }
 
-Vec3 Mesh::shadingNormal(std::uint32_t tri, double beta, double gamma) const {
-  const Vec3 flat = flatNormal(tri);
+Vec3 Mesh::shadingNormal(std::uint32_t tri, double beta, double gamma, const Vec3& flat) const {
   if (shading_ == Shading::Flat) return flat;
   const TriangleIndices& t = data_->triangles[tri];
   const std::vector<Vec3>& vn = *vertexNormals_;

@@ -68,8 +68,9 @@ SurfacePoint surfaceOf(const Scene& scene, const Ray& ray, const Hit& hit, Preci
   const Mesh& m = scene.meshes[ref.object];
   const TriangleIndices& tri = m.triangles()[ref.triangle];
   const auto& v = m.vertices();
-  SurfacePoint sp{Vec3(0.0),     m.shadingNormal(ref.triangle, hit.beta, hit.gamma),
-                  &m.material(), m.flatNormal(ref.triangle),
+  const Vec3 flat = m.flatNormal(ref.triangle);
+  SurfacePoint sp{Vec3(0.0),     m.shadingNormal(ref.triangle, hit.beta, hit.gamma, flat),
+                  &m.material(), flat,
                   Vec3(0.0),     precision};
   if (precision == Precision::Double)
     barycentricPoint<double>(v[tri[0]], v[tri[1]], v[tri[2]], hit.beta, hit.gamma, sp);

@@ -81,8 +81,12 @@ class Mesh {
 
   FaceOfTriangle faceOf(std::uint32_t triangle) const;
 
-  // The shading normal at barycentrics (beta, gamma) of triangle `tri`.
-  Vec3 shadingNormal(std::uint32_t tri, double beta, double gamma) const;
+  // The shading normal at barycentrics (beta, gamma) of triangle `tri`;
+  // `flat` is its flatNormal, for a caller that has it already.
+  Vec3 shadingNormal(std::uint32_t tri, double beta, double gamma, const Vec3& flat) const;
+  Vec3 shadingNormal(std::uint32_t tri, double beta, double gamma) const {
+    return shadingNormal(tri, beta, gamma, flatNormal(tri));
+  }
 
  private:
   std::filesystem::path file_;
